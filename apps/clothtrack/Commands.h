@@ -1,0 +1,19 @@
+#pragma once
+// Subcommands of the clothtrack app. Each parses its own options from args (everything after
+// the subcommand name) and returns the process exit code: 0 success, 1 user error.
+#include <string>
+#include <vector>
+
+namespace clothtrack::app
+{
+using Args = std::vector<std::string>;
+
+int runInspect(const Args& args);
+int runConvert(const Args& args);
+
+/// Raised for a user error (bad option, bad path); main prints the message as one line.
+struct UsageError
+{
+  std::string message;
+};
+} // namespace clothtrack::app

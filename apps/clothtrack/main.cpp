@@ -1,0 +1,83 @@
+// clothtrack: command-line front end of the ClothTrack toolkit.
+#include "Commands.h"
+
+#include <clothtrack/Error.h>
+
+#include <vtkObject.h>
+#include <vtkOutputWindow.h>
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <map>
+
+namespace
+{
+struct Command
+{
+  int (*run)(const clothtrack::app::Args&);
+  const char* summary;
+};
+
+const std::map<std::string, Command>& commands()
+{
+  static const std::map<std::string, Command> table = {
+    {"inspect", {clothtrack::app::runInspect, "read a sequence and print per-frame geometry and topology"}},
+    {"convert", {clothtrack::app::runConvert, "read a sequence and write it as a .pvd collection (and OBJ)"}},
+  };
+  return table;
+}
+
+void printUsage(std::FILE* out)
+{
+  std::fprintf(out, "usage: clothtrack <command> [options]\n\ncommands:\n");
+  for (const auto& [name, command] : commands())
+    std::fprintf(out, "  %-18s %s\n", name.c_str(), command.summary);
+  std::fprintf(out, "\n'clothtrack <command> --help' describes a command's options.\n");
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  // VTK messages go to stderr as plain lines rather than to a window or a popup.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToAlwaysStdErr();
+  if (argc < 2)
+  {
+    printUsage(stderr);
+    return 1;
+  }
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help")
+  {
+    printUsage(stdout);
+    return 0;
+  }
+  if (name == "--version")
+  {
+    std::printf("clothtrack 0.1.0\n");
+    return 0;
+  }
+  const auto it = commands().find(name);
+  if (it == commands().end())
+  {
+    std::fprintf(stderr, "clothtrack: unknown command '%s' (try 'clothtrack --help')\n", name.c_str());
+    return 1;
+  }
+  try
+  {
+    return it->second.run(clothtrack::app::Args(argv + 2, argv + argc));
+  }
+  catch (const clothtrack::app::UsageError& e)
+  {
+    std::fprintf(stderr, "clothtrack %s: %s\n", name.c_str(), e.message.c_str());
+  }
+  catch (const clothtrack::Error& e)
+  {
+    std::fprintf(stderr, "clothtrack %s: error: %s\n", name.c_str(), e.what());
+  }
+  catch (const std::exception& e)
+  {
+    std::fprintf(stderr, "clothtrack %s: error: %s\n", name.c_str(), e.what());
+  }
+  return 1;
+}

@@ -1,0 +1,74 @@
+#include "TriangleMesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace clothtrack
+{
+Eigen::VectorXd faceAreas(const TriangleMesh& mesh)
+{
+  Eigen::VectorXd areas(mesh.numFaces());
+  for (int f = 0; f < mesh.numFaces(); ++f)
+  {
+    const Vec3 a = mesh.vertex(mesh.F(f, 0));
+    const Vec3 b = mesh.vertex(mesh.F(f, 1));
+    const Vec3 c = mesh.vertex(mesh.F(f, 2));
+    areas[f] = 0.5 * (b - a).cross(c - a).norm();
+  }
+  return areas;
+}
+
+Points faceNormals(const TriangleMesh& mesh)
+{
+  Points normals(mesh.numFaces(), 3);
+  for (int f = 0; f < mesh.numFaces(); ++f)
+  {
+    const Vec3 a = mesh.vertex(mesh.F(f, 0));
+    const Vec3 n = (mesh.vertex(mesh.F(f, 1)) - a).cross(mesh.vertex(mesh.F(f, 2)) - a);
+    const double len = n.norm();
+    normals.row(f) = (len > 0 ? Vec3(n / len) : Vec3::Zero()).transpose();
+  }
+  return normals;
+}
+
+Points vertexNormals(const TriangleMesh& mesh)
+{
+  // Angle weights make the normal independent of how a fan is triangulated.
+  Points normals = Points::Zero(mesh.numVertices(), 3);
+  const Points fn = faceNormals(mesh);
+  for (int f = 0; f < mesh.numFaces(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int i = mesh.F(f, k);
+      const Vec3 e1 = mesh.vertex(mesh.F(f, (k + 1) % 3)) - mesh.vertex(i);
+      const Vec3 e2 = mesh.vertex(mesh.F(f, (k + 2) % 3)) - mesh.vertex(i);
+      const double denom = e1.norm() * e2.norm();
+      if (denom <= 0)
+        continue;
+      const double angle = std::acos(std::clamp(e1.dot(e2) / denom, -1.0, 1.0));
+      normals.row(i) += angle * fn.row(f);
+    }
+  }
+  for (int i = 0; i < mesh.numVertices(); ++i)
+  {
+    const double len = normals.row(i).norm();
+    if (len > 0)
+      normals.row(i) /= len;
+  }
+  return normals;
+}
+
+double surfaceArea(const TriangleMesh& mesh) { return faceAreas(mesh).sum(); }
+
+double meanEdgeLength(const TriangleMesh& mesh)
+{
+  if (mesh.numFaces() == 0)
+    return 0.0;
+  double sum = 0;
+  for (int f = 0; f < mesh.numFaces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      sum += (mesh.vertex(mesh.F(f, k)) - mesh.vertex(mesh.F(f, (k + 1) % 3))).norm();
+  return sum / (3.0 * mesh.numFaces());
+}
+} // namespace clothtrack

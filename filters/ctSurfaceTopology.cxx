@@ -1,0 +1,92 @@
+#include "ctSurfaceTopology.h"
+
+#include "ctMeshConversion.h"
+
+#include <clothtrack/Components.h>
+#include <clothtrack/Error.h>
+#include <clothtrack/Laplacian.h>
+#include <clothtrack/MeshValidation.h>
+
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+vtkStandardNewMacro(ctSurfaceTopology);
+
+namespace
+{
+template <class ArrayT>
+vtkSmartPointer<ArrayT> namedArray(const char* name, vtkIdType size)
+{
+  auto array = vtkSmartPointer<ArrayT>::New();
+  array->SetName(name);
+  array->SetNumberOfTuples(size);
+  return array;
+}
+} // namespace
+
+int ctSurfaceTopology::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                   vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  try
+  {
+    const clothtrack::TriangleMesh mesh = clothtrack::toTriangleMesh(input, "surface topology input");
+    clothtrack::validateMesh(mesh, "surface topology input");
+    // The output carries the triangles actually analysed, so cell arrays match cells.
+    output->ShallowCopy(clothtrack::toPolyData(mesh));
+    output->GetPointData()->PassData(input->GetPointData());
+    const clothtrack::MeshTopology topology = clothtrack::buildTopology(mesh);
+    const clothtrack::Components components = clothtrack::connectedComponents(mesh, topology);
+    const clothtrack::ManifoldReport manifold = clothtrack::checkManifold(mesh, topology);
+    const Eigen::VectorXd areas = clothtrack::mixedVoronoiAreas(mesh);
+
+    auto cellComponent = namedArray<vtkIntArray>("ComponentId", mesh.numFaces());
+    for (int f = 0; f < mesh.numFaces(); ++f)
+      cellComponent->SetValue(f, components.faceLabel[f]);
+    auto pointComponent = namedArray<vtkIntArray>("ComponentId", mesh.numVertices());
+    auto voronoi = namedArray<vtkDoubleArray>("VoronoiArea", mesh.numVertices());
+    for (int v = 0; v < mesh.numVertices(); ++v)
+    {
+      pointComponent->SetValue(v, components.vertexLabel[v]);
+      voronoi->SetValue(v, areas[v]);
+    }
+    output->GetCellData()->AddArray(cellComponent);
+    output->GetPointData()->AddArray(pointComponent);
+    output->GetPointData()->AddArray(voronoi);
+
+    const int nc = components.count();
+    auto area = namedArray<vtkDoubleArray>("ComponentArea", nc);
+    auto genus = namedArray<vtkIntArray>("ComponentGenus", nc);
+    auto boundaries = namedArray<vtkIntArray>("ComponentBoundaries", nc);
+    auto euler = namedArray<vtkIntArray>("ComponentEulerCharacteristic", nc);
+    for (int c = 0; c < nc; ++c)
+    {
+      area->SetValue(c, components.info[c].area);
+      genus->SetValue(c, components.info[c].genus());
+      boundaries->SetValue(c, components.info[c].numBoundaries);
+      euler->SetValue(c, components.info[c].eulerCharacteristic());
+    }
+    auto nmEdges = namedArray<vtkIntArray>("NonManifoldEdges", 1);
+    nmEdges->SetValue(0, manifold.nonManifoldEdges);
+    auto nmVertices = namedArray<vtkIntArray>("NonManifoldVertices", 1);
+    nmVertices->SetValue(0, manifold.nonManifoldVertices);
+    for (vtkAbstractArray* a : {static_cast<vtkAbstractArray*>(area), static_cast<vtkAbstractArray*>(genus),
+                                static_cast<vtkAbstractArray*>(boundaries), static_cast<vtkAbstractArray*>(euler),
+                                static_cast<vtkAbstractArray*>(nmEdges), static_cast<vtkAbstractArray*>(nmVertices)})
+      output->GetFieldData()->AddArray(a);
+  }
+  catch (const clothtrack::Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return 1;
+}
