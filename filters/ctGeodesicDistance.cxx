@@ -26,8 +26,7 @@ void ctGeodesicDistance::AddSourcePoint(vtkIdType pointId)
 
 void ctGeodesicDistance::ClearSourcePoints()
 {
-  if (this->SourcePoints.empty())
-    return;
+  if (this->SourcePoints.empty()) return;
   this->SourcePoints.clear();
   this->Modified();
 }
@@ -45,7 +44,8 @@ int ctGeodesicDistance::RequestData(vtkInformation*, vtkInformationVector** inpu
   }
   try
   {
-    const clothtrack::TriangleMesh mesh = clothtrack::toTriangleMesh(input, "geodesic distance input");
+    const clothtrack::TriangleMesh mesh =
+        clothtrack::toTriangleMesh(input, "geodesic distance input");
     clothtrack::validateMesh(mesh, "geodesic distance input");
     std::vector<int> sources;
     for (vtkIdType id : this->SourcePoints)
@@ -61,10 +61,10 @@ int ctGeodesicDistance::RequestData(vtkInformation*, vtkInformationVector** inpu
     if (this->Method == HEAT)
       d = clothtrack::HeatGeodesic(mesh).distances(sources, limit);
     else
-      d = clothtrack::WavefrontGeodesic(mesh, this->Method == DIJKSTRA
-                                                ? clothtrack::WavefrontGeodesic::Method::Dijkstra
-                                                : clothtrack::WavefrontGeodesic::Method::FastMarching)
-            .distances(sources, limit);
+      d = clothtrack::WavefrontGeodesic(
+              mesh, this->Method == DIJKSTRA ? clothtrack::WavefrontGeodesic::Method::Dijkstra
+                                             : clothtrack::WavefrontGeodesic::Method::FastMarching)
+              .distances(sources, limit);
     vtkNew<vtkDoubleArray> distance;
     distance->SetName("GeodesicDistance");
     distance->SetNumberOfTuples(d.size());

@@ -21,8 +21,7 @@ vtkStandardNewMacro(ctSurfaceTopology);
 
 namespace
 {
-template <class ArrayT>
-vtkSmartPointer<ArrayT> namedArray(const char* name, vtkIdType size)
+template <class ArrayT> vtkSmartPointer<ArrayT> namedArray(const char* name, vtkIdType size)
 {
   auto array = vtkSmartPointer<ArrayT>::New();
   array->SetName(name);
@@ -38,7 +37,8 @@ int ctSurfaceTopology::RequestData(vtkInformation*, vtkInformationVector** input
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   try
   {
-    const clothtrack::TriangleMesh mesh = clothtrack::toTriangleMesh(input, "surface topology input");
+    const clothtrack::TriangleMesh mesh =
+        clothtrack::toTriangleMesh(input, "surface topology input");
     clothtrack::validateMesh(mesh, "surface topology input");
     // The output carries the triangles actually analysed, so cell arrays match cells.
     output->ShallowCopy(clothtrack::toPolyData(mesh));
@@ -49,8 +49,7 @@ int ctSurfaceTopology::RequestData(vtkInformation*, vtkInformationVector** input
     const Eigen::VectorXd areas = clothtrack::mixedVoronoiAreas(mesh);
 
     auto cellComponent = namedArray<vtkIntArray>("ComponentId", mesh.numFaces());
-    for (int f = 0; f < mesh.numFaces(); ++f)
-      cellComponent->SetValue(f, components.faceLabel[f]);
+    for (int f = 0; f < mesh.numFaces(); ++f) cellComponent->SetValue(f, components.faceLabel[f]);
     auto pointComponent = namedArray<vtkIntArray>("ComponentId", mesh.numVertices());
     auto voronoi = namedArray<vtkDoubleArray>("VoronoiArea", mesh.numVertices());
     for (int v = 0; v < mesh.numVertices(); ++v)
@@ -78,9 +77,10 @@ int ctSurfaceTopology::RequestData(vtkInformation*, vtkInformationVector** input
     nmEdges->SetValue(0, manifold.nonManifoldEdges);
     auto nmVertices = namedArray<vtkIntArray>("NonManifoldVertices", 1);
     nmVertices->SetValue(0, manifold.nonManifoldVertices);
-    for (vtkAbstractArray* a : {static_cast<vtkAbstractArray*>(area), static_cast<vtkAbstractArray*>(genus),
-                                static_cast<vtkAbstractArray*>(boundaries), static_cast<vtkAbstractArray*>(euler),
-                                static_cast<vtkAbstractArray*>(nmEdges), static_cast<vtkAbstractArray*>(nmVertices)})
+    for (vtkAbstractArray* a :
+         {static_cast<vtkAbstractArray*>(area), static_cast<vtkAbstractArray*>(genus),
+          static_cast<vtkAbstractArray*>(boundaries), static_cast<vtkAbstractArray*>(euler),
+          static_cast<vtkAbstractArray*>(nmEdges), static_cast<vtkAbstractArray*>(nmVertices)})
       output->GetFieldData()->AddArray(a);
   }
   catch (const clothtrack::Error& e)

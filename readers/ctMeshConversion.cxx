@@ -35,7 +35,8 @@ namespace
 std::string lowerExtension(const std::string& path)
 {
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -50,18 +51,18 @@ struct ErrorCollector
   {
     command->SetClientData(this);
     command->SetCallback(
-      [](vtkObject*, unsigned long, void* client, void* callData)
-      {
-        auto* self = static_cast<ErrorCollector*>(client);
-        if (self->message.empty() && callData)
+        [](vtkObject*, unsigned long, void* client, void* callData)
         {
-          std::string text = static_cast<const char*>(callData);
-          // VTK prefixes messages with the source location; keep only the last line.
-          text.erase(text.find_last_not_of("\n ") + 1);
-          const auto nl = text.rfind('\n');
-          self->message = nl == std::string::npos ? text : text.substr(nl + 1);
-        }
-      });
+          auto* self = static_cast<ErrorCollector*>(client);
+          if (self->message.empty() && callData)
+          {
+            std::string text = static_cast<const char*>(callData);
+            // VTK prefixes messages with the source location; keep only the last line.
+            text.erase(text.find_last_not_of("\n ") + 1);
+            const auto nl = text.rfind('\n');
+            self->message = nl == std::string::npos ? text : text.substr(nl + 1);
+          }
+        });
   }
   void watch(vtkObject* object)
   {
@@ -70,19 +71,16 @@ struct ErrorCollector
   }
 };
 
-template <class Reader>
-vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path)
+template <class Reader> vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path)
 {
   vtkNew<Reader> reader;
   ErrorCollector errors;
   errors.watch(reader);
   reader->SetFileName(path.c_str());
   reader->Update();
-  if (!errors.message.empty())
-    throw Error(path + ": " + errors.message);
+  if (!errors.message.empty()) throw Error(path + ": " + errors.message);
   vtkSmartPointer<vtkPolyData> out = reader->GetOutput();
-  if (!out)
-    throw Error(path + ": the file could not be read");
+  if (!out) throw Error(path + ": the file could not be read");
   return out;
 }
 } // namespace
@@ -94,8 +92,7 @@ TriangleMesh toTriangleMesh(vtkPolyData* polyData, const std::string& name)
   const vtkIdType np = polyData->GetNumberOfPoints();
   TriangleMesh mesh;
   mesh.V.resize(np, 3);
-  for (vtkIdType i = 0; i < np; ++i)
-    polyData->GetPoints()->GetPoint(i, mesh.V.row(i).data());
+  for (vtkIdType i = 0; i < np; ++i) polyData->GetPoints()->GetPoint(i, mesh.V.row(i).data());
 
   std::vector<int> faces;
   auto checked = [&](vtkIdType id)
@@ -135,7 +132,8 @@ TriangleMesh toTriangleMesh(vtkPolyData* polyData, const std::string& name)
       }
     }
   }
-  mesh.F = Eigen::Map<const Triangles>(faces.data(), static_cast<Eigen::Index>(faces.size() / 3), 3);
+  mesh.F =
+      Eigen::Map<const Triangles>(faces.data(), static_cast<Eigen::Index>(faces.size() / 3), 3);
   return mesh;
 }
 
@@ -171,17 +169,12 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh)
 TriangleMesh readMeshFile(const std::string& path)
 {
   std::error_code ec;
-  if (!fs::exists(path, ec))
-    throw Error(path + ": no such file");
-  if (!fs::is_regular_file(path, ec))
-    throw Error(path + ": not a regular file");
-  if (fs::file_size(path, ec) == 0)
-    throw Error(path + ": empty file");
+  if (!fs::exists(path, ec)) throw Error(path + ": no such file");
+  if (!fs::is_regular_file(path, ec)) throw Error(path + ": not a regular file");
+  if (fs::file_size(path, ec) == 0) throw Error(path + ": empty file");
   const std::string ext = lowerExtension(path);
-  if (ext == ".obj")
-    return readOBJ(path);
-  if (ext == ".off")
-    return readOFF(path);
+  if (ext == ".obj") return readOBJ(path);
+  if (ext == ".off") return readOFF(path);
   vtkSmartPointer<vtkPolyData> data;
   if (ext == ".ply") // VTK's PLY reader crashes on truncated headers: use the strict one
     return readPLY(path);
@@ -196,8 +189,7 @@ TriangleMesh readMeshFile(const std::string& path)
     if (!probe->OpenVTKFile() || !probe->ReadHeader())
       throw Error(path + ": not a legacy VTK file (bad header)");
     probe->CloseVTKFile();
-    if (!probe->IsFilePolyData())
-      throw Error(path + ": legacy VTK file does not hold POLYDATA");
+    if (!probe->IsFilePolyData()) throw Error(path + ": legacy VTK file does not hold POLYDATA");
     data = readWithVtk<vtkPolyDataReader>(path);
   }
   else
@@ -215,8 +207,7 @@ void writeMeshFile(const std::string& path, vtkPolyData* polyData)
     errors.watch(writer);
     writer->SetInputData(polyData);
     writer->SetFileName(tmp.c_str());
-    if (!writer->Write() && errors.message.empty())
-      errors.message = "write failed";
+    if (!writer->Write() && errors.message.empty()) errors.message = "write failed";
   };
   if (ext == ".obj" || ext == ".off")
   {
@@ -257,16 +248,14 @@ void writeMeshFile(const std::string& path, vtkPolyData* polyData)
   }
   std::error_code ec;
   fs::rename(tmp, path, ec);
-  if (ec)
-    throw Error(path + ": cannot rename temporary file (" + ec.message() + ")");
+  if (ec) throw Error(path + ": cannot rename temporary file (" + ec.message() + ")");
 }
 
 TriangleMesh loadFrame(const std::string& path, const FrameConventions& conventions,
                        std::vector<std::string>* warnings)
 {
   TriangleMesh mesh = readMeshFile(path);
-  if (conventions.unitScale != 1.0)
-    mesh.V *= conventions.unitScale;
+  if (conventions.unitScale != 1.0) mesh.V *= conventions.unitScale;
   if (conventions.upAxis == 2) // (x, y, z) -> (x, z, -y)
   {
     const Eigen::VectorXd y = mesh.V.col(1);
@@ -281,27 +270,26 @@ TriangleMesh loadFrame(const std::string& path, const FrameConventions& conventi
   }
   const CleaningReport report = validateAndClean(mesh, path);
   if (warnings)
-    for (const auto& w : report.warnings)
-      warnings->push_back(path + ": " + w);
+    for (const auto& w : report.warnings) warnings->push_back(path + ": " + w);
   return mesh;
 }
 
-void writeCollection(const std::string& pvdPath, const std::vector<std::pair<double, std::string>>& entries)
+void writeCollection(const std::string& pvdPath,
+                     const std::vector<std::pair<double, std::string>>& entries)
 {
   const std::string tmp = pvdPath + ".part";
   {
     std::ofstream out(tmp);
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  "
+           "<Collection>\n";
     out.precision(17);
     for (const auto& [time, file] : entries)
       out << "    <DataSet timestep=\"" << time << "\" part=\"0\" file=\"" << file << "\"/>\n";
     out << "  </Collection>\n</VTKFile>\n";
-    if (!out)
-      throw Error(pvdPath + ": cannot write collection file");
+    if (!out) throw Error(pvdPath + ": cannot write collection file");
   }
   std::error_code ec;
   fs::rename(tmp, pvdPath, ec);
-  if (ec)
-    throw Error(pvdPath + ": cannot rename temporary file (" + ec.message() + ")");
+  if (ec) throw Error(pvdPath + ": cannot rename temporary file (" + ec.message() + ")");
 }
 } // namespace clothtrack

@@ -39,7 +39,8 @@ struct FrameConventions
 
 /// readMeshFile, then units and up axis, then validateAndClean. Repairs made (merged
 /// vertices, removed zero-area faces) are appended to `warnings` as "path: what".
-CTREADERS_EXPORT TriangleMesh loadFrame(const std::string& path, const FrameConventions& conventions,
+CTREADERS_EXPORT TriangleMesh loadFrame(const std::string& path,
+                                        const FrameConventions& conventions,
                                         std::vector<std::string>* warnings = nullptr);
 
 /// Writes a ParaView collection file listing (time, relative path) entries, atomically.

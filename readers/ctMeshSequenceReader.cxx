@@ -47,7 +47,8 @@ int ctMeshSequenceReader::FillOutputPortInformation(int port, vtkInformation* in
   return 1;
 }
 
-vtkTypeBool ctMeshSequenceReader::ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+vtkTypeBool ctMeshSequenceReader::ProcessRequest(vtkInformation* request,
+                                                 vtkInformationVector** inputVector,
                                                  vtkInformationVector* outputVector)
 {
   // Only the requested port is produced, so that playing frames never loads the whole
@@ -55,12 +56,13 @@ vtkTypeBool ctMeshSequenceReader::ProcessRequest(vtkInformation* request, vtkInf
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
   {
     const int requested = request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-                            ? request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-                            : -1;
+                              ? request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
+                              : -1;
     if (requested >= 0)
       for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
         if (port != requested)
-          outputVector->GetInformationObject(port)->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
+          outputVector->GetInformationObject(port)->Set(
+              vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
     return 1;
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
@@ -85,10 +87,10 @@ int ctMeshSequenceReader::RequestInformation(vtkInformation*, vtkInformationVect
   in.ListTime.Modified();
 
   std::vector<double> times(in.Frames.size());
-  for (size_t k = 0; k < times.size(); ++k)
-    times[k] = static_cast<double>(k) / this->FrameRate;
+  for (size_t k = 0; k < times.size(); ++k) times[k] = static_cast<double>(k) / this->FrameRate;
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(),
+               static_cast<int>(times.size()));
   const double range[2] = {times.front(), times.back()};
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   return 1;
@@ -96,15 +98,13 @@ int ctMeshSequenceReader::RequestInformation(vtkInformation*, vtkInformationVect
 
 int ctMeshSequenceReader::GetNumberOfFrames()
 {
-  if (this->Internal->ListTime < this->GetMTime())
-    this->UpdateInformation();
+  if (this->Internal->ListTime < this->GetMTime()) this->UpdateInformation();
   return static_cast<int>(this->Internal->Frames.size());
 }
 
 std::string ctMeshSequenceReader::GetFrameFileName(int index)
 {
-  if (index < 0 || index >= this->GetNumberOfFrames())
-    return {};
+  if (index < 0 || index >= this->GetNumberOfFrames()) return {};
   return this->Internal->Frames[index];
 }
 
@@ -114,12 +114,13 @@ bool ctMeshSequenceReader::ReadFrameInto(int index, vtkPolyData* output)
   try
   {
     clothtrack::FrameConventions conventions;
-    conventions.unitScale = this->LengthUnit == MILLIMETRES ? 1e-3 : this->LengthUnit == CENTIMETRES ? 1e-2 : 1.0;
+    conventions.unitScale = this->LengthUnit == MILLIMETRES   ? 1e-3
+                            : this->LengthUnit == CENTIMETRES ? 1e-2
+                                                              : 1.0;
     conventions.upAxis = this->UpAxis;
     std::vector<std::string> warnings;
     const clothtrack::TriangleMesh mesh = clothtrack::loadFrame(path, conventions, &warnings);
-    for (const auto& warning : warnings)
-      vtkWarningMacro(<< warning);
+    for (const auto& warning : warnings) vtkWarningMacro(<< warning);
     output->ShallowCopy(clothtrack::toPolyData(mesh));
   }
   catch (const clothtrack::Error& e)
@@ -174,8 +175,8 @@ int ctMeshSequenceReader::RequestData(vtkInformation* request, vtkInformationVec
     return 0;
   }
   const int port = request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-                     ? request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-                     : 0;
+                       ? request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
+                       : 0;
   if (port == 1)
   {
     auto* output = vtkMultiBlockDataSet::GetData(outputVector, 1);
@@ -185,14 +186,13 @@ int ctMeshSequenceReader::RequestData(vtkInformation* request, vtkInformationVec
       sequence->SetNumberOfBlocks(static_cast<unsigned int>(in.Frames.size()));
       for (size_t k = 0; k < in.Frames.size(); ++k)
       {
-        if (this->GetAbortExecute())
-          return 0;
+        if (this->GetAbortExecute()) return 0;
         vtkNew<vtkPolyData> frame;
-        if (!this->ReadFrameInto(static_cast<int>(k), frame))
-          return 0;
+        if (!this->ReadFrameInto(static_cast<int>(k), frame)) return 0;
         sequence->SetBlock(static_cast<unsigned int>(k), frame);
         sequence->GetMetaData(static_cast<unsigned int>(k))
-          ->Set(vtkCompositeDataSet::NAME(), std::filesystem::path(in.Frames[k]).stem().string().c_str());
+            ->Set(vtkCompositeDataSet::NAME(),
+                  std::filesystem::path(in.Frames[k]).stem().string().c_str());
         this->UpdateProgress(static_cast<double>(k + 1) / in.Frames.size());
       }
       in.Sequence = sequence;
@@ -212,8 +212,7 @@ int ctMeshSequenceReader::RequestData(vtkInformation* request, vtkInformationVec
     index = std::max(0, std::min(index, static_cast<int>(in.Frames.size()) - 1));
   }
   auto* output = vtkPolyData::GetData(outputVector, 0);
-  if (!this->ReadFrameInto(index, output))
-    return 0;
+  if (!this->ReadFrameInto(index, output)) return 0;
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), index / this->FrameRate);
   return 1;
 }
@@ -225,8 +224,7 @@ vtkMultiBlockDataSet* ctMeshSequenceReader::GetSequenceOutput()
 
 int ctMeshSequenceReader::CanReadFile(const char* name)
 {
-  if (!name)
-    return 0;
+  if (!name) return 0;
   try
   {
     return clothtrack::listFrames(name).empty() ? 0 : 1;

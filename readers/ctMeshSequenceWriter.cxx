@@ -32,7 +32,8 @@ int ctMeshSequenceWriter::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-vtkTypeBool ctMeshSequenceWriter::ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+vtkTypeBool ctMeshSequenceWriter::ProcessRequest(vtkInformation* request,
+                                                 vtkInformationVector** inputVector,
                                                  vtkInformationVector* outputVector)
 {
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
@@ -42,14 +43,17 @@ vtkTypeBool ctMeshSequenceWriter::ProcessRequest(vtkInformation* request, vtkInf
     if (inInfo && inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
     {
       const double* t = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-      this->InputTimes.assign(t, t + inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+      this->InputTimes.assign(t,
+                              t + inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
     }
     return 1;
   }
   if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
   {
-    if (!this->InputTimes.empty() && this->CurrentTimeIndex < static_cast<int>(this->InputTimes.size()))
-      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), this->InputTimes[this->CurrentTimeIndex]);
+    if (!this->InputTimes.empty() &&
+        this->CurrentTimeIndex < static_cast<int>(this->InputTimes.size()))
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(),
+                  this->InputTimes[this->CurrentTimeIndex]);
     return 1;
   }
   if (!request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
@@ -78,8 +82,7 @@ vtkTypeBool ctMeshSequenceWriter::ProcessRequest(vtkInformation* request, vtkInf
       double time = k / this->FrameRate;
       vtkDataObject* block = blocks->GetBlock(k);
       if (auto* poly = vtkPolyData::SafeDownCast(block))
-        if (vtkDataArray* t = poly->GetFieldData()->GetArray("TimeValue"))
-          time = t->GetTuple1(0);
+        if (vtkDataArray* t = poly->GetFieldData()->GetArray("TimeValue")) time = t->GetTuple1(0);
       ok = this->WriteFrame(block, static_cast<int>(k), time);
       this->UpdateProgress(static_cast<double>(k + 1) / n);
     }
@@ -104,8 +107,7 @@ vtkTypeBool ctMeshSequenceWriter::ProcessRequest(vtkInformation* request, vtkInf
 
 int ctMeshSequenceWriter::Finish(bool framesWritten)
 {
-  if (framesWritten && this->WriteCollection())
-    return 1;
+  if (framesWritten && this->WriteCollection()) return 1;
   // Write() reports success through the error code.
   this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
   return 0;
@@ -132,8 +134,7 @@ bool ctMeshSequenceWriter::WriteFrame(vtkDataObject* frame, int index, double ti
     if (ec)
       throw clothtrack::Error(folder.string() + ": cannot create folder (" + ec.message() + ")");
     clothtrack::writeMeshFile((pvd.parent_path() / relative).string(), poly);
-    if (this->WriteOBJ)
-      clothtrack::writeMeshFile((folder / (stem + name + ".obj")).string(), poly);
+    if (this->WriteOBJ) clothtrack::writeMeshFile((folder / (stem + name + ".obj")).string(), poly);
   }
   catch (const clothtrack::Error& e)
   {

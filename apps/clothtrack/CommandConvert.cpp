@@ -26,14 +26,17 @@ int runConvert(const Args& args)
   bool obj = false;
   SequenceOptions seq;
   po::options_description options("convert options");
-  options.add_options()("input", po::value(&input)->required(), "folder, glob pattern, list file or mesh file")(
-    "output,o", po::value(&output)->required(), "output collection (.pvd); frames go to a folder beside it")(
-    "obj", po::bool_switch(&obj), "also write each frame as OBJ");
+  options.add_options()("input", po::value(&input)->required(),
+                        "folder, glob pattern, list file or mesh file")(
+      "output,o", po::value(&output)->required(),
+      "output collection (.pvd); frames go to a folder beside it")("obj", po::bool_switch(&obj),
+                                                                   "also write each frame as OBJ");
   addSequenceOptions(options, seq);
   po::positional_options_description positional;
   positional.add("input", 1);
   po::variables_map values;
-  if (!parseOptions(args, "clothtrack convert INPUT -o OUT.pvd [options]", options, positional, values))
+  if (!parseOptions(args, "clothtrack convert INPUT -o OUT.pvd [options]", options, positional,
+                    values))
     return 0;
   const FrameConventions conventions = toConventions(seq);
   if (fs::path(output).extension() != ".pvd")
@@ -45,8 +48,7 @@ int runConvert(const Args& args)
   const fs::path folder = pvd.parent_path() / stem;
   std::error_code ec;
   fs::create_directories(folder, ec);
-  if (ec)
-    throw UsageError{folder.string() + ": cannot create folder (" + ec.message() + ")"};
+  if (ec) throw UsageError{folder.string() + ": cannot create folder (" + ec.message() + ")"};
 
   std::vector<std::pair<double, std::string>> entries;
   Progress progress("convert", static_cast<int>(frames.size()));
@@ -54,8 +56,7 @@ int runConvert(const Args& args)
   {
     std::vector<std::string> warnings;
     const TriangleMesh mesh = loadFrame(frames[k], conventions, &warnings);
-    for (const auto& w : warnings)
-      std::fprintf(stderr, "warning: %s\n", w.c_str());
+    for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     vtkSmartPointer<vtkPolyData> poly = toPolyData(mesh);
     vtkNew<vtkStringArray> source;
     source->SetName("SourceFile");
@@ -65,8 +66,7 @@ int runConvert(const Args& args)
     std::snprintf(name, sizeof(name), "_%04zu", k);
     const std::string relative = stem + "/" + stem + name + ".vtp";
     writeMeshFile((pvd.parent_path() / relative).string(), poly);
-    if (obj)
-      writeMeshFile((folder / (stem + name + ".obj")).string(), poly);
+    if (obj) writeMeshFile((folder / (stem + name + ".obj")).string(), poly);
     entries.emplace_back(k / seq.fps, relative);
     progress.step(static_cast<int>(k + 1));
   }

@@ -29,8 +29,9 @@ void addSequenceOptions(po::options_description& options, SequenceOptions& targe
 {
   options.add_options()("unit", po::value(&target.unit)->default_value("m"),
                         "length unit of the input files: m, cm or mm")(
-    "up", po::value(&target.up)->default_value("y"), "up axis of the input files: x, y or z")(
-    "fps", po::value(&target.fps)->default_value(25.0), "frames per second (time of frame k = k / fps)");
+      "up", po::value(&target.up)->default_value("y"),
+      "up axis of the input files: x, y or z")("fps", po::value(&target.fps)->default_value(25.0),
+                                               "frames per second (time of frame k = k / fps)");
 }
 
 clothtrack::FrameConventions toConventions(const SequenceOptions& options)
@@ -52,8 +53,7 @@ clothtrack::FrameConventions toConventions(const SequenceOptions& options)
     c.upAxis = 2;
   else
     throw UsageError{"--up must be x, y or z (got '" + options.up + "')"};
-  if (!(options.fps > 0))
-    throw UsageError{"--fps must be positive"};
+  if (!(options.fps > 0)) throw UsageError{"--fps must be positive"};
   return c;
 }
 } // namespace clothtrack::app

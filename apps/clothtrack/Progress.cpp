@@ -6,14 +6,15 @@
 namespace clothtrack::app
 {
 Progress::Progress(std::string label, int total)
-  : label_(std::move(label)), total_(total), start_(std::chrono::steady_clock::now()),
-    interactive_(isatty(STDERR_FILENO) != 0)
+    : label_(std::move(label)), total_(total), start_(std::chrono::steady_clock::now()),
+      interactive_(isatty(STDERR_FILENO) != 0)
 {
 }
 
 void Progress::step(int done)
 {
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double rate = elapsed > 0 ? done / elapsed : 0.0;
   const double left = rate > 0 ? (total_ - done) / rate : 0.0;
   // A terminal gets one line rewritten in place; a log gets a line per step.
@@ -24,7 +25,6 @@ void Progress::step(int done)
 
 void Progress::finish()
 {
-  if (interactive_)
-    std::fprintf(stderr, "\n");
+  if (interactive_) std::fprintf(stderr, "\n");
 }
 } // namespace clothtrack::app

@@ -22,8 +22,11 @@ struct Command
 const std::map<std::string, Command>& commands()
 {
   static const std::map<std::string, Command> table = {
-    {"inspect", {clothtrack::app::runInspect, "read a sequence and print per-frame geometry and topology"}},
-    {"convert", {clothtrack::app::runConvert, "read a sequence and write it as a .pvd collection (and OBJ)"}},
+      {"inspect",
+       {clothtrack::app::runInspect, "read a sequence and print per-frame geometry and topology"}},
+      {"convert",
+       {clothtrack::app::runConvert,
+        "read a sequence and write it as a .pvd collection (and OBJ)"}},
   };
   return table;
 }
@@ -60,7 +63,8 @@ int main(int argc, char** argv)
   const auto it = commands().find(name);
   if (it == commands().end())
   {
-    std::fprintf(stderr, "clothtrack: unknown command '%s' (try 'clothtrack --help')\n", name.c_str());
+    std::fprintf(stderr, "clothtrack: unknown command '%s' (try 'clothtrack --help')\n",
+                 name.c_str());
     return 1;
   }
   try

@@ -15,8 +15,7 @@ Components connectedComponents(const TriangleMesh& mesh, const MeshTopology& top
   std::vector<int> stack;
   for (int seed = 0; seed < nf; ++seed)
   {
-    if (label[seed] >= 0)
-      continue;
+    if (label[seed] >= 0) continue;
     label[seed] = count;
     stack.push_back(seed);
     while (!stack.empty())
@@ -49,11 +48,9 @@ Components connectedComponents(const TriangleMesh& mesh, const MeshTopology& top
   std::vector<int> vertexLabel(mesh.numVertices(), -1);
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k)
-      if (vertexLabel[mesh.F(f, k)] < 0)
-        vertexLabel[mesh.F(f, k)] = label[f];
+      if (vertexLabel[mesh.F(f, k)] < 0) vertexLabel[mesh.F(f, k)] = label[f];
   for (int v = 0; v < mesh.numVertices(); ++v)
-    if (vertexLabel[v] >= 0)
-      info[vertexLabel[v]].numVertices++;
+    if (vertexLabel[v] >= 0) info[vertexLabel[v]].numVertices++;
   for (int e = 0; e < topology.numEdges(); ++e)
   {
     const int c = label[*topology.edgeFaces.begin(e)];
@@ -68,16 +65,13 @@ Components connectedComponents(const TriangleMesh& mesh, const MeshTopology& top
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return info[a].area > info[b].area; });
   std::vector<int> rank(count);
-  for (int i = 0; i < count; ++i)
-    rank[order[i]] = i;
+  for (int i = 0; i < count; ++i) rank[order[i]] = i;
 
   Components result;
   result.info.resize(count);
-  for (int i = 0; i < count; ++i)
-    result.info[rank[i]] = info[i];
+  for (int i = 0; i < count; ++i) result.info[rank[i]] = info[i];
   result.faceLabel.resize(nf);
-  for (int f = 0; f < nf; ++f)
-    result.faceLabel[f] = rank[label[f]];
+  for (int f = 0; f < nf; ++f) result.faceLabel[f] = rank[label[f]];
   result.vertexLabel.resize(mesh.numVertices());
   for (int v = 0; v < mesh.numVertices(); ++v)
     result.vertexLabel[v] = vertexLabel[v] < 0 ? -1 : rank[vertexLabel[v]];
@@ -92,8 +86,7 @@ TriangleMesh extractComponent(const TriangleMesh& mesh, const Components& compon
   std::vector<int> keptFaces;
   for (int f = 0; f < mesh.numFaces(); ++f)
   {
-    if (components.faceLabel[f] != component)
-      continue;
+    if (components.faceLabel[f] != component) continue;
     keptFaces.push_back(f);
     for (int k = 0; k < 3; ++k)
       if (newId[mesh.F(f, k)] < 0)
@@ -110,8 +103,7 @@ TriangleMesh extractComponent(const TriangleMesh& mesh, const Components& compon
   for (size_t i = 0; i < keptFaces.size(); ++i)
     for (int k = 0; k < 3; ++k)
       out.F(static_cast<Eigen::Index>(i), k) = newId[mesh.F(keptFaces[i], k)];
-  if (oldVertexIds)
-    *oldVertexIds = std::move(oldId);
+  if (oldVertexIds) *oldVertexIds = std::move(oldId);
   return out;
 }
 } // namespace clothtrack

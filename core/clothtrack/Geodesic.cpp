@@ -24,7 +24,7 @@ std::vector<GeodesicSeed> seedsAtSurfacePoint(const TriangleMesh& mesh, int face
 }
 
 WavefrontGeodesic::WavefrontGeodesic(const TriangleMesh& mesh, Method method)
-  : mesh_(mesh), topology_(buildTopology(mesh)), method_(method)
+    : mesh_(mesh), topology_(buildTopology(mesh)), method_(method)
 {
 }
 
@@ -32,8 +32,7 @@ Eigen::VectorXd WavefrontGeodesic::distances(const std::vector<int>& sources, do
 {
   std::vector<GeodesicSeed> seeds;
   seeds.reserve(sources.size());
-  for (int s : sources)
-    seeds.push_back({s, 0.0});
+  for (int s : sources) seeds.push_back({s, 0.0});
   return distancesFromSeeds(seeds, limit);
 }
 
@@ -44,24 +43,22 @@ double WavefrontGeodesic::triangleUpdate(int a, int b, int c, const Eigen::Vecto
   // when that segment crosses AB.
   const Vec3 pa = mesh_.vertex(a), pb = mesh_.vertex(b), pc = mesh_.vertex(c);
   const double ab = (pb - pa).norm();
-  if (ab <= 0)
-    return kUnreached;
+  if (ab <= 0) return kUnreached;
   const double ac2 = (pc - pa).squaredNorm(), bc2 = (pc - pb).squaredNorm();
   const double cx = (ac2 - bc2 + ab * ab) / (2 * ab);
   const double cy = std::sqrt(std::max(0.0, ac2 - cx * cx));
   const double da = d[a], db = d[b];
   const double sx = (da * da - db * db + ab * ab) / (2 * ab);
   const double sy2 = da * da - sx * sx;
-  if (sy2 < 0 || cy <= 0)
-    return kUnreached;
+  if (sy2 < 0 || cy <= 0) return kUnreached;
   const double sy = -std::sqrt(sy2);
   const double crossX = sx + (cx - sx) * (-sy) / (cy - sy);
-  if (crossX < 0 || crossX > ab)
-    return kUnreached;
+  if (crossX < 0 || crossX > ab) return kUnreached;
   return std::hypot(cx - sx, cy - sy);
 }
 
-Eigen::VectorXd WavefrontGeodesic::distancesFromSeeds(const std::vector<GeodesicSeed>& seeds, double limit) const
+Eigen::VectorXd WavefrontGeodesic::distancesFromSeeds(const std::vector<GeodesicSeed>& seeds,
+                                                      double limit) const
 {
   const int n = mesh_.numVertices();
   Eigen::VectorXd d = Eigen::VectorXd::Constant(n, kUnreached);
@@ -92,23 +89,19 @@ Eigen::VectorXd WavefrontGeodesic::distancesFromSeeds(const std::vector<Geodesic
   {
     const auto [dist, v] = queue.top();
     queue.pop();
-    if (done[v] || dist > d[v])
-      continue;
-    if (dist > limit)
-      break;
+    if (done[v] || dist > d[v]) continue;
+    if (dist > limit) break;
     done[v] = 1;
     reached_.push_back(v);
     const Vec3 pv = mesh_.vertex(v);
-    for (const int* w = topology_.vertexVertices.begin(v); w != topology_.vertexVertices.end(v); ++w)
-      if (!done[*w])
-        relax(*w, dist + (mesh_.vertex(*w) - pv).norm());
-    if (method_ != Method::FastMarching)
-      continue;
+    for (const int* w = topology_.vertexVertices.begin(v); w != topology_.vertexVertices.end(v);
+         ++w)
+      if (!done[*w]) relax(*w, dist + (mesh_.vertex(*w) - pv).norm());
+    if (method_ != Method::FastMarching) continue;
     for (const int* f = topology_.vertexFaces.begin(v); f != topology_.vertexFaces.end(v); ++f)
     {
       int k = 0;
-      while (mesh_.F(*f, k) != v)
-        ++k;
+      while (mesh_.F(*f, k) != v) ++k;
       const int a = mesh_.F(*f, (k + 1) % 3), b = mesh_.F(*f, (k + 2) % 3);
       if (!done[a] && done[b])
         relax(a, triangleUpdate(v, b, a, d));
@@ -117,8 +110,7 @@ Eigen::VectorXd WavefrontGeodesic::distancesFromSeeds(const std::vector<Geodesic
     }
   }
   for (int v = 0; v < n; ++v)
-    if (!done[v])
-      d[v] = kUnreached;
+    if (!done[v]) d[v] = kUnreached;
   return d;
 }
 
@@ -135,7 +127,7 @@ struct HeatGeodesic::Impl
 };
 
 HeatGeodesic::HeatGeodesic(const TriangleMesh& mesh, double timeFactor)
-  : impl_(std::make_unique<Impl>(mesh))
+    : impl_(std::make_unique<Impl>(mesh))
 {
   const SparseMatrix L = cotanLaplacian(mesh);
   const Eigen::VectorXd area = mixedVoronoiAreas(mesh);
@@ -181,18 +173,15 @@ Eigen::VectorXd HeatGeodesic::distances(const std::vector<int>& sources, double 
   Eigen::VectorXd div = Eigen::VectorXd::Zero(n);
   for (int f = 0; f < mesh.numFaces(); ++f)
   {
-    if (impl_->faceArea[f] <= 0)
-      continue;
+    if (impl_->faceArea[f] <= 0) continue;
     const int id[3] = {mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)};
     const Vec3 p[3] = {mesh.vertex(id[0]), mesh.vertex(id[1]), mesh.vertex(id[2])};
     const Vec3 normal = impl_->faceNormal.row(f).transpose();
     Vec3 grad = Vec3::Zero();
-    for (int k = 0; k < 3; ++k)
-      grad += u[id[k]] * normal.cross(p[(k + 2) % 3] - p[(k + 1) % 3]);
+    for (int k = 0; k < 3; ++k) grad += u[id[k]] * normal.cross(p[(k + 2) % 3] - p[(k + 1) % 3]);
     grad /= 2 * impl_->faceArea[f];
     const double len = grad.norm();
-    if (!(len > 0))
-      continue;
+    if (!(len > 0)) continue;
     const Vec3 X = -grad / len;
     for (int k = 0; k < 3; ++k)
     {
@@ -211,8 +200,7 @@ Eigen::VectorXd HeatGeodesic::distances(const std::vector<int>& sources, double 
   for (int s : sources)
   {
     const int c = impl_->components.vertexLabel[s];
-    if (c >= 0)
-      shift[c] = std::min(shift[c], phi[s]);
+    if (c >= 0) shift[c] = std::min(shift[c], phi[s]);
   }
   for (int v = 0; v < n; ++v)
   {
@@ -223,11 +211,9 @@ Eigen::VectorXd HeatGeodesic::distances(const std::vector<int>& sources, double 
       continue;
     }
     phi[v] = std::max(0.0, phi[v] - shift[c]);
-    if (phi[v] > limit)
-      phi[v] = kUnreached;
+    if (phi[v] > limit) phi[v] = kUnreached;
   }
-  for (int s : sources)
-    phi[s] = 0.0;
+  for (int s : sources) phi[s] = 0.0;
   return phi;
 }
 } // namespace clothtrack

@@ -41,7 +41,8 @@ public:
   WavefrontGeodesic(const TriangleMesh& mesh, Method method = Method::FastMarching);
 
   /// Distance to the nearest seed; kUnreached beyond `limit` and on parts with no seed.
-  Eigen::VectorXd distancesFromSeeds(const std::vector<GeodesicSeed>& seeds, double limit = kUnreached) const;
+  Eigen::VectorXd distancesFromSeeds(const std::vector<GeodesicSeed>& seeds,
+                                     double limit = kUnreached) const;
   Eigen::VectorXd distances(const std::vector<int>& sources, double limit = kUnreached) const;
 
   /// Vertices reached by the last call, in the order they were finalised (nearest first).

@@ -21,12 +21,10 @@ Eigen::VectorXd mixedVoronoiAreas(const TriangleMesh& mesh)
     const int id[3] = {mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)};
     const Vec3 p[3] = {mesh.vertex(id[0]), mesh.vertex(id[1]), mesh.vertex(id[2])};
     const double area = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
-    if (area <= 0)
-      continue;
+    if (area <= 0) continue;
     int obtuse = -1;
     for (int k = 0; k < 3; ++k)
-      if ((p[(k + 1) % 3] - p[k]).dot(p[(k + 2) % 3] - p[k]) < 0)
-        obtuse = k;
+      if ((p[(k + 1) % 3] - p[k]).dot(p[(k + 2) % 3] - p[k]) < 0) obtuse = k;
     for (int k = 0; k < 3; ++k)
     {
       if (obtuse >= 0)
@@ -37,7 +35,8 @@ Eigen::VectorXd mixedVoronoiAreas(const TriangleMesh& mesh)
       const int q = (k + 1) % 3, r = (k + 2) % 3;
       const double cotQ = cotangent(p[k] - p[q], p[r] - p[q]);
       const double cotR = cotangent(p[k] - p[r], p[q] - p[r]);
-      areas[id[k]] += ((p[r] - p[k]).squaredNorm() * cotQ + (p[q] - p[k]).squaredNorm() * cotR) / 8.0;
+      areas[id[k]] +=
+          ((p[r] - p[k]).squaredNorm() * cotQ + (p[q] - p[k]).squaredNorm() * cotR) / 8.0;
     }
   }
   return areas;

@@ -17,18 +17,22 @@ namespace
 std::string readWholeFile(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
+  if (!in) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
   std::ostringstream buffer;
   buffer << in.rdbuf();
-  if (in.bad())
-    throw Error(path + ": read error");
+  if (in.bad()) throw Error(path + ": read error");
   return buffer.str();
 }
 
-std::string where(const std::string& path, int line) { return path + ":" + std::to_string(line) + ": "; }
+std::string where(const std::string& path, int line)
+{
+  return path + ":" + std::to_string(line) + ": ";
+}
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool isSpace(char c)
+{
+  return c == ' ' || c == '\t' || c == '\r';
+}
 
 // Splits one line into whitespace-separated tokens (views into the line).
 void tokenize(const char* begin, const char* end, std::vector<std::string>& tokens)
@@ -37,13 +41,10 @@ void tokenize(const char* begin, const char* end, std::vector<std::string>& toke
   const char* p = begin;
   while (p < end)
   {
-    while (p < end && isSpace(*p))
-      ++p;
+    while (p < end && isSpace(*p)) ++p;
     const char* start = p;
-    while (p < end && !isSpace(*p))
-      ++p;
-    if (p > start)
-      tokens.emplace_back(start, p);
+    while (p < end && !isSpace(*p)) ++p;
+    if (p > start) tokens.emplace_back(start, p);
   }
 }
 
@@ -77,7 +78,8 @@ TriangleMesh toMesh(const std::vector<double>& coords, const std::vector<int>& f
 {
   TriangleMesh mesh;
   mesh.V = Eigen::Map<const Points>(coords.data(), static_cast<Eigen::Index>(coords.size() / 3), 3);
-  mesh.F = Eigen::Map<const Triangles>(faces.data(), static_cast<Eigen::Index>(faces.size() / 3), 3);
+  mesh.F =
+      Eigen::Map<const Triangles>(faces.data(), static_cast<Eigen::Index>(faces.size() / 3), 3);
   return mesh;
 }
 } // namespace
@@ -85,8 +87,7 @@ TriangleMesh toMesh(const std::vector<double>& coords, const std::vector<int>& f
 TriangleMesh readOBJ(const std::string& path)
 {
   const std::string text = readWholeFile(path);
-  if (text.empty())
-    throw Error(path + ": empty file");
+  if (text.empty()) throw Error(path + ": empty file");
   if (text.find('\0') != std::string::npos)
     throw Error(path + ": not a text OBJ file (contains NUL bytes)");
   std::vector<double> coords;
@@ -102,19 +103,18 @@ TriangleMesh readOBJ(const std::string& path)
   while (p < end)
   {
     const char* eol = static_cast<const char*>(std::memchr(p, '\n', end - p));
-    if (!eol)
-      eol = end;
+    if (!eol) eol = end;
     ++lineNo;
     tokenize(p, eol, tokens);
     p = eol + 1;
-    if (tokens.empty() || tokens[0][0] == '#')
-      continue;
+    if (tokens.empty() || tokens[0][0] == '#') continue;
     if (tokens[0] == "v")
     {
       double xyz[3];
       if (tokens.size() < 4 || !parseDouble(tokens[1], xyz[0]) || !parseDouble(tokens[2], xyz[1]) ||
           !parseDouble(tokens[3], xyz[2]))
-        throw Error(where(path, lineNo) + "malformed vertex record (expected 'v x y z'; truncated file?)");
+        throw Error(where(path, lineNo) +
+                    "malformed vertex record (expected 'v x y z'; truncated file?)");
       coords.insert(coords.end(), xyz, xyz + 3);
     }
     else if (tokens[0] == "f")
@@ -144,8 +144,8 @@ TriangleMesh readOBJ(const std::string& path)
       // Negative indices count back from the vertices read so far.
       const long idx = raw > 0 ? raw - 1 : faceVertexCount[f] + raw;
       if (raw == 0 || idx < 0 || idx >= nv)
-        throw Error(where(path, faceLine[f]) + "face index " + std::to_string(raw) + " out of range (file has " +
-                    std::to_string(nv) + " vertices)");
+        throw Error(where(path, faceLine[f]) + "face index " + std::to_string(raw) +
+                    " out of range (file has " + std::to_string(nv) + " vertices)");
       polygon.push_back(static_cast<int>(idx));
     }
     addFan(polygon, faces);
@@ -156,8 +156,7 @@ TriangleMesh readOBJ(const std::string& path)
 TriangleMesh readOFF(const std::string& path)
 {
   const std::string text = readWholeFile(path);
-  if (text.empty())
-    throw Error(path + ": empty file");
+  if (text.empty()) throw Error(path + ": empty file");
   // Token stream without comments, remembering line numbers for messages.
   std::vector<std::pair<std::string, int>> tokens;
   {
@@ -169,23 +168,21 @@ TriangleMesh readOFF(const std::string& path)
     {
       ++lineNo;
       const auto hash = line.find('#');
-      if (hash != std::string::npos)
-        line.resize(hash);
+      if (hash != std::string::npos) line.resize(hash);
       tokenize(line.data(), line.data() + line.size(), parts);
-      for (auto& t : parts)
-        tokens.emplace_back(std::move(t), lineNo);
+      for (auto& t : parts) tokens.emplace_back(std::move(t), lineNo);
     }
   }
   size_t pos = 0;
   auto next = [&](const char* what) -> const std::pair<std::string, int>&
   {
-    if (pos >= tokens.size())
-      throw Error(path + ": truncated file: missing " + std::string(what));
+    if (pos >= tokens.size()) throw Error(path + ": truncated file: missing " + std::string(what));
     return tokens[pos++];
   };
   const auto& header = next("header");
   if (header.first != "OFF")
-    throw Error(path + ": not an OFF file (first word is '" + header.first.substr(0, 20) + "', expected 'OFF')");
+    throw Error(path + ": not an OFF file (first word is '" + header.first.substr(0, 20) +
+                "', expected 'OFF')");
   long counts[3];
   for (long& c : counts)
   {
@@ -207,7 +204,8 @@ TriangleMesh readOFF(const std::string& path)
     const int line = nt.second;
     long n;
     if (!parseInt(nt.first, n) || n < 3)
-      throw Error(where(path, line) + "face " + std::to_string(f) + " has an invalid vertex count '" + nt.first + "'");
+      throw Error(where(path, line) + "face " + std::to_string(f) +
+                  " has an invalid vertex count '" + nt.first + "'");
     polygon.clear();
     for (long k = 0; k < n; ++k)
     {
@@ -216,13 +214,12 @@ TriangleMesh readOFF(const std::string& path)
       if (!parseInt(t.first, idx))
         throw Error(where(path, t.second) + "malformed face index '" + t.first + "'");
       if (idx < 0 || idx >= counts[0])
-        throw Error(where(path, t.second) + "face index " + std::to_string(idx) + " out of range (file has " +
-                    std::to_string(counts[0]) + " vertices)");
+        throw Error(where(path, t.second) + "face index " + std::to_string(idx) +
+                    " out of range (file has " + std::to_string(counts[0]) + " vertices)");
       polygon.push_back(static_cast<int>(idx));
     }
     // Optional per-face colour values run to the end of the line.
-    while (pos < tokens.size() && tokens[pos].second == line)
-      ++pos;
+    while (pos < tokens.size() && tokens[pos].second == line) ++pos;
     addFan(polygon, faces);
   }
   return toMesh(coords, faces);
@@ -233,16 +230,14 @@ namespace
 std::FILE* openForWrite(const std::string& path)
 {
   std::FILE* out = std::fopen(path.c_str(), "w");
-  if (!out)
-    throw Error(path + ": cannot write file (" + std::strerror(errno) + ")");
+  if (!out) throw Error(path + ": cannot write file (" + std::strerror(errno) + ")");
   return out;
 }
 
 void closeChecked(std::FILE* out, const std::string& path)
 {
   const bool failed = std::ferror(out) != 0;
-  if (std::fclose(out) != 0 || failed)
-    throw Error(path + ": write error (disk full?)");
+  if (std::fclose(out) != 0 || failed) throw Error(path + ": write error (disk full?)");
 }
 } // namespace
 

@@ -12,13 +12,11 @@ Adjacency buildCsr(int size, const std::vector<std::pair<int, int>>& pairs)
 {
   Adjacency adj;
   adj.offsets.assign(size + 1, 0);
-  for (const auto& p : pairs)
-    ++adj.offsets[p.first + 1];
+  for (const auto& p : pairs) ++adj.offsets[p.first + 1];
   std::partial_sum(adj.offsets.begin(), adj.offsets.end(), adj.offsets.begin());
   adj.items.resize(pairs.size());
   std::vector<int> cursor(adj.offsets.begin(), adj.offsets.end() - 1);
-  for (const auto& p : pairs)
-    adj.items[cursor[p.first]++] = p.second;
+  for (const auto& p : pairs) adj.items[cursor[p.first]++] = p.second;
   return adj;
 }
 } // namespace
@@ -41,9 +39,9 @@ MeshTopology buildTopology(const TriangleMesh& mesh)
     for (int k = 0; k < 3; ++k)
     {
       int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
-      if (a > b)
-        std::swap(a, b);
-      half[3 * f + k] = {(static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b), f, k};
+      if (a > b) std::swap(a, b);
+      half[3 * f + k] = {(static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b), f,
+                         k};
     }
   std::sort(half.begin(), half.end(),
             [](const HalfEdge& x, const HalfEdge& y)
@@ -55,8 +53,8 @@ MeshTopology buildTopology(const TriangleMesh& mesh)
   for (size_t i = 0; i < half.size(); ++i)
   {
     if (i == 0 || half[i].key != half[i - 1].key)
-      topo.edges.push_back({static_cast<int>(half[i].key >> 32),
-                            static_cast<int>(half[i].key & 0xffffffffu)});
+      topo.edges.push_back(
+          {static_cast<int>(half[i].key >> 32), static_cast<int>(half[i].key & 0xffffffffu)});
     const int e = static_cast<int>(topo.edges.size()) - 1;
     topo.faceEdges[half[i].face][half[i].side] = e;
     edgeFacePairs.emplace_back(e, half[i].face);
@@ -75,8 +73,7 @@ MeshTopology buildTopology(const TriangleMesh& mesh)
   std::vector<std::pair<int, int>> vf;
   vf.reserve(3 * static_cast<size_t>(nf));
   for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k)
-      vf.emplace_back(mesh.F(f, k), f);
+    for (int k = 0; k < 3; ++k) vf.emplace_back(mesh.F(f, k), f);
   topo.vertexFaces = buildCsr(nv, vf);
   return topo;
 }
@@ -87,8 +84,7 @@ Adjacency faceFaceAdjacency(const MeshTopology& topology, int numFaces)
   for (int e = 0; e < topology.numEdges(); ++e)
     for (const int* a = topology.edgeFaces.begin(e); a != topology.edgeFaces.end(e); ++a)
       for (const int* b = topology.edgeFaces.begin(e); b != topology.edgeFaces.end(e); ++b)
-        if (a != b)
-          pairs.emplace_back(*a, *b);
+        if (a != b) pairs.emplace_back(*a, *b);
   return buildCsr(numFaces, pairs);
 }
 
@@ -107,8 +103,7 @@ std::vector<std::vector<int>> boundaryLoops(const TriangleMesh& mesh, const Mesh
   for (int start = 0; start < mesh.numVertices(); ++start)
     for (int slot = outgoing.offsets[start]; slot < outgoing.offsets[start + 1]; ++slot)
     {
-      if (used[slot])
-        continue;
+      if (used[slot]) continue;
       std::vector<int> loop{start};
       used[slot] = 1;
       int v = outgoing.items[slot];
@@ -122,8 +117,7 @@ std::vector<std::vector<int>> boundaryLoops(const TriangleMesh& mesh, const Mesh
             chosen = s;
             break;
           }
-        if (chosen < 0)
-          break; // open chain: only possible with inconsistent orientation
+        if (chosen < 0) break; // open chain: only possible with inconsistent orientation
         used[chosen] = 1;
         v = outgoing.items[chosen];
       }
@@ -136,16 +130,14 @@ ManifoldReport checkManifold(const TriangleMesh& mesh, const MeshTopology& topol
 {
   ManifoldReport report;
   for (int e = 0; e < topology.numEdges(); ++e)
-    if (topology.isNonManifoldEdge(e))
-      ++report.nonManifoldEdges;
+    if (topology.isNonManifoldEdge(e)) ++report.nonManifoldEdges;
 
   // A manifold vertex has its incident faces connected through edges that contain it.
   std::vector<int> label(mesh.numFaces(), -1);
   for (int v = 0; v < mesh.numVertices(); ++v)
   {
     const int deg = topology.vertexFaces.degree(v);
-    if (deg <= 1)
-      continue;
+    if (deg <= 1) continue;
     const int* faces = topology.vertexFaces.begin(v);
     std::vector<int> stack{faces[0]};
     label[faces[0]] = v;
@@ -158,8 +150,7 @@ ManifoldReport checkManifold(const TriangleMesh& mesh, const MeshTopology& topol
       {
         const int e = topology.faceEdges[f][k];
         const auto& ed = topology.edges[e];
-        if (ed[0] != v && ed[1] != v)
-          continue;
+        if (ed[0] != v && ed[1] != v) continue;
         for (const int* g = topology.edgeFaces.begin(e); g != topology.edgeFaces.end(e); ++g)
           if (label[*g] != v)
           {
@@ -169,8 +160,7 @@ ManifoldReport checkManifold(const TriangleMesh& mesh, const MeshTopology& topol
           }
       }
     }
-    if (reached != deg)
-      ++report.nonManifoldVertices;
+    if (reached != deg) ++report.nonManifoldVertices;
   }
   return report;
 }

@@ -14,10 +14,8 @@ namespace clothtrack
 {
 void validateMesh(const TriangleMesh& mesh, const std::string& name)
 {
-  if (mesh.numVertices() == 0)
-    throw Error(name + ": empty mesh (no vertex)");
-  if (mesh.numFaces() == 0)
-    throw Error(name + ": no face (a point cloud is not a surface)");
+  if (mesh.numVertices() == 0) throw Error(name + ": empty mesh (no vertex)");
+  if (mesh.numFaces() == 0) throw Error(name + ": no face (a point cloud is not a surface)");
   for (int i = 0; i < mesh.numVertices(); ++i)
     if (!mesh.V.row(i).allFinite())
       throw Error(name + ": vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
@@ -29,25 +27,23 @@ void validateMesh(const TriangleMesh& mesh, const std::string& name)
                     std::to_string(mesh.numVertices()) + ")");
 }
 
-CleaningReport cleanMesh(TriangleMesh& mesh, const CleaningOptions& options, std::vector<int>* vertexMap)
+CleaningReport cleanMesh(TriangleMesh& mesh, const CleaningOptions& options,
+                         std::vector<int>* vertexMap)
 {
   CleaningReport report;
   const int nv = mesh.numVertices();
   std::vector<int> representative(nv);
-  for (int i = 0; i < nv; ++i)
-    representative[i] = i;
+  for (int i = 0; i < nv; ++i) representative[i] = i;
 
   if (options.mergeDuplicateVertices && nv > 0)
   {
     Eigen::AlignedBox3d box;
-    for (int i = 0; i < nv; ++i)
-      box.extend(mesh.vertex(i));
+    for (int i = 0; i < nv; ++i) box.extend(mesh.vertex(i));
     const double tol = options.mergeTolerance * std::max(box.diagonal().norm(), 1e-300);
     const PointIndex index(mesh.V);
     for (int i = 0; i < nv; ++i)
     {
-      if (representative[i] != i)
-        continue;
+      if (representative[i] != i) continue;
       for (const auto& n : index.withinRadius(mesh.vertex(i), tol))
         if (n.index > i && representative[n.index] == n.index)
         {
@@ -68,7 +64,8 @@ CleaningReport cleanMesh(TriangleMesh& mesh, const CleaningOptions& options, std
     {
       const Vec3 a = mesh.vertex(tri[0]), b = mesh.vertex(tri[1]), c = mesh.vertex(tri[2]);
       // Zero area relative to the edge lengths: collapsed or collinear corners.
-      const double scale = std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()});
+      const double scale =
+          std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()});
       if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] ||
           (b - a).cross(c - a).norm() <= 1e-12 * scale)
       {
@@ -93,56 +90,53 @@ CleaningReport cleanMesh(TriangleMesh& mesh, const CleaningOptions& options, std
   {
     for (const auto& t : faces)
       for (int v : t)
-        if (newIndex[v] < 0)
-          newIndex[v] = 0;
+        if (newIndex[v] < 0) newIndex[v] = 0;
     for (int i = 0; i < nv; ++i)
-      if (newIndex[i] == 0)
-        newIndex[i] = kept++;
+      if (newIndex[i] == 0) newIndex[i] = kept++;
     for (int i = 0; i < nv; ++i)
-      if (representative[i] == i && newIndex[i] < 0)
-        ++report.unusedVertices;
+      if (representative[i] == i && newIndex[i] < 0) ++report.unusedVertices;
   }
   else
   {
     for (int i = 0; i < nv; ++i)
-      if (representative[i] == i)
-        newIndex[i] = kept++;
+      if (representative[i] == i) newIndex[i] = kept++;
   }
 
   TriangleMesh out;
   out.V.resize(kept, 3);
   for (int i = 0; i < nv; ++i)
-    if (newIndex[i] >= 0)
-      out.V.row(newIndex[i]) = mesh.V.row(i);
+    if (newIndex[i] >= 0) out.V.row(newIndex[i]) = mesh.V.row(i);
   out.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
   for (size_t f = 0; f < faces.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      out.F(static_cast<Eigen::Index>(f), k) = newIndex[faces[f][k]];
+    for (int k = 0; k < 3; ++k) out.F(static_cast<Eigen::Index>(f), k) = newIndex[faces[f][k]];
   if (vertexMap)
   {
     vertexMap->resize(nv);
-    for (int i = 0; i < nv; ++i)
-      (*vertexMap)[i] = newIndex[representative[i]];
+    for (int i = 0; i < nv; ++i) (*vertexMap)[i] = newIndex[representative[i]];
   }
   mesh = std::move(out);
 
   if (report.mergedVertices)
-    report.warnings.push_back("merged " + std::to_string(report.mergedVertices) + " duplicated vertices");
+    report.warnings.push_back("merged " + std::to_string(report.mergedVertices) +
+                              " duplicated vertices");
   if (report.degenerateFaces)
-    report.warnings.push_back("removed " + std::to_string(report.degenerateFaces) + " zero-area faces");
+    report.warnings.push_back("removed " + std::to_string(report.degenerateFaces) +
+                              " zero-area faces");
   if (report.duplicateFaces)
-    report.warnings.push_back("removed " + std::to_string(report.duplicateFaces) + " repeated faces");
+    report.warnings.push_back("removed " + std::to_string(report.duplicateFaces) +
+                              " repeated faces");
   if (report.unusedVertices)
-    report.warnings.push_back("removed " + std::to_string(report.unusedVertices) + " vertices used by no face");
+    report.warnings.push_back("removed " + std::to_string(report.unusedVertices) +
+                              " vertices used by no face");
   return report;
 }
 
-CleaningReport validateAndClean(TriangleMesh& mesh, const std::string& name, const CleaningOptions& options)
+CleaningReport validateAndClean(TriangleMesh& mesh, const std::string& name,
+                                const CleaningOptions& options)
 {
   validateMesh(mesh, name);
   CleaningReport report = cleanMesh(mesh, options);
-  if (mesh.numFaces() == 0)
-    throw Error(name + ": every face has zero area");
+  if (mesh.numFaces() == 0) throw Error(name + ": every face has zero area");
   return report;
 }
 } // namespace clothtrack

@@ -5,8 +5,8 @@
 
 #include <cctype>
 #include <cerrno>
-#include <cstdlib>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -39,14 +39,11 @@ struct Element
 
 int typeSize(const std::string& t)
 {
-  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
-    return 1;
-  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
-    return 2;
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
   if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32")
     return 4;
-  if (t == "double" || t == "float64")
-    return 8;
+  if (t == "double" || t == "float64") return 8;
   return 0;
 }
 
@@ -54,14 +51,13 @@ class Cursor
 {
 public:
   Cursor(const std::string& path, const std::string& data, size_t pos, Format format)
-    : path_(path), data_(data), pos_(pos), format_(format)
+      : path_(path), data_(data), pos_(pos), format_(format)
   {
   }
 
   double read(const std::string& type)
   {
-    if (format_ == Format::Ascii)
-      return readAscii();
+    if (format_ == Format::Ascii) return readAscii();
     const int size = typeSize(type);
     if (pos_ + size > data_.size())
       throw Error(path_ + ": truncated file (binary data ends early)");
@@ -72,28 +68,19 @@ public:
     const uint16_t one = 1;
     const bool hostLittle = *reinterpret_cast<const unsigned char*>(&one) == 1;
     if (little != hostLittle)
-      for (int i = 0; i < size / 2; ++i)
-        std::swap(bytes[i], bytes[size - 1 - i]);
-    if (type == "char" || type == "int8")
-      return static_cast<int8_t>(bytes[0]);
-    if (type == "uchar" || type == "uint8")
-      return bytes[0];
-    if (type == "short" || type == "int16")
-      return as<int16_t>(bytes);
-    if (type == "ushort" || type == "uint16")
-      return as<uint16_t>(bytes);
-    if (type == "int" || type == "int32")
-      return as<int32_t>(bytes);
-    if (type == "uint" || type == "uint32")
-      return as<uint32_t>(bytes);
-    if (type == "float" || type == "float32")
-      return as<float>(bytes);
+      for (int i = 0; i < size / 2; ++i) std::swap(bytes[i], bytes[size - 1 - i]);
+    if (type == "char" || type == "int8") return static_cast<int8_t>(bytes[0]);
+    if (type == "uchar" || type == "uint8") return bytes[0];
+    if (type == "short" || type == "int16") return as<int16_t>(bytes);
+    if (type == "ushort" || type == "uint16") return as<uint16_t>(bytes);
+    if (type == "int" || type == "int32") return as<int32_t>(bytes);
+    if (type == "uint" || type == "uint32") return as<uint32_t>(bytes);
+    if (type == "float" || type == "float32") return as<float>(bytes);
     return as<double>(bytes);
   }
 
 private:
-  template <class T>
-  static double as(const unsigned char* bytes)
+  template <class T> static double as(const unsigned char* bytes)
   {
     T value;
     std::memcpy(&value, bytes, sizeof(T));
@@ -102,16 +89,13 @@ private:
 
   double readAscii()
   {
-    while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_])))
-      ++pos_;
-    if (pos_ >= data_.size())
-      throw Error(path_ + ": truncated file (ASCII data ends early)");
+    while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
+    if (pos_ >= data_.size()) throw Error(path_ + ": truncated file (ASCII data ends early)");
     const char* start = data_.c_str() + pos_;
     char* end = nullptr;
     errno = 0;
     const double value = std::strtod(start, &end);
-    if (end == start)
-      throw Error(path_ + ": malformed number near byte " + std::to_string(pos_));
+    if (end == start) throw Error(path_ + ": malformed number near byte " + std::to_string(pos_));
     pos_ += end - start;
     return value;
   }
@@ -126,18 +110,15 @@ private:
 TriangleMesh readPLY(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
+  if (!in) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
   std::stringstream buffer;
   buffer << in.rdbuf();
   const std::string data = buffer.str();
-  if (data.empty())
-    throw Error(path + ": empty file");
+  if (data.empty()) throw Error(path + ": empty file");
   if (data.compare(0, 3, "ply") != 0)
     throw Error(path + ": not a PLY file (does not start with 'ply')");
   const size_t headerEnd = data.find("end_header");
-  if (headerEnd == std::string::npos)
-    throw Error(path + ": truncated PLY header (no end_header)");
+  if (headerEnd == std::string::npos) throw Error(path + ": truncated PLY header (no end_header)");
   size_t bodyStart = data.find('\n', headerEnd);
   if (bodyStart == std::string::npos)
     throw Error(path + ": truncated file (nothing after end_header)");
@@ -179,8 +160,7 @@ TriangleMesh readPLY(const std::string& path)
     }
     else if (keyword == "property")
     {
-      if (elements.empty())
-        throw Error(where + "property before any element");
+      if (elements.empty()) throw Error(where + "property before any element");
       Property p;
       std::string type;
       words >> type;
@@ -196,8 +176,7 @@ TriangleMesh readPLY(const std::string& path)
       elements.back().properties.push_back(p);
     }
   }
-  if (!haveFormat)
-    throw Error(path + ": PLY header has no format line");
+  if (!haveFormat) throw Error(path + ": PLY header has no format line");
 
   std::vector<double> coords;
   std::vector<int> faces;
@@ -214,7 +193,8 @@ TriangleMesh readPLY(const std::string& path)
       const auto& name = e.properties[p].name;
       if (isVertex && name.size() == 1 && name[0] >= 'x' && name[0] <= 'z')
         xyz[name[0] - 'x'] = static_cast<int>(p);
-      if (isFace && (name == "vertex_indices" || name == "vertex_index") && !e.properties[p].countType.empty())
+      if (isFace && (name == "vertex_indices" || name == "vertex_index") &&
+          !e.properties[p].countType.empty())
         indexProperty = static_cast<int>(p);
     }
     if (isVertex)
@@ -240,13 +220,13 @@ TriangleMesh readPLY(const std::string& path)
         {
           const double value = cursor.read(prop.type);
           for (int k = 0; k < 3; ++k)
-            if (isVertex && xyz[k] == static_cast<int>(p))
-              point[k] = value;
+            if (isVertex && xyz[k] == static_cast<int>(p)) point[k] = value;
           continue;
         }
         const double n = cursor.read(prop.countType);
         if (n < 0 || n > 1e6)
-          throw Error(path + ": corrupt list length " + std::to_string(n) + " in element '" + e.name + "'");
+          throw Error(path + ": corrupt list length " + std::to_string(n) + " in element '" +
+                      e.name + "'");
         polygon.clear();
         for (long k = 0; k < static_cast<long>(n); ++k)
         {
@@ -268,13 +248,13 @@ TriangleMesh readPLY(const std::string& path)
             faces.insert(faces.end(), {polygon[0], polygon[k], polygon[k + 1]});
         }
       }
-      if (isVertex)
-        coords.insert(coords.end(), point, point + 3);
+      if (isVertex) coords.insert(coords.end(), point, point + 3);
     }
   }
   TriangleMesh mesh;
   mesh.V = Eigen::Map<const Points>(coords.data(), static_cast<Eigen::Index>(coords.size() / 3), 3);
-  mesh.F = Eigen::Map<const Triangles>(faces.data(), static_cast<Eigen::Index>(faces.size() / 3), 3);
+  mesh.F =
+      Eigen::Map<const Triangles>(faces.data(), static_cast<Eigen::Index>(faces.size() / 3), 3);
   return mesh;
 }
 } // namespace clothtrack

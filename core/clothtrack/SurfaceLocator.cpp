@@ -70,10 +70,10 @@ SurfaceLocator::SurfaceLocator(const TriangleMesh& mesh) : mesh_(mesh)
   std::iota(order_.begin(), order_.end(), 0);
   std::vector<Vec3> centroids(nf);
   for (int f = 0; f < nf; ++f)
-    centroids[f] = (mesh.vertex(mesh.F(f, 0)) + mesh.vertex(mesh.F(f, 1)) + mesh.vertex(mesh.F(f, 2))) / 3.0;
+    centroids[f] =
+        (mesh.vertex(mesh.F(f, 0)) + mesh.vertex(mesh.F(f, 1)) + mesh.vertex(mesh.F(f, 2))) / 3.0;
   nodes_.reserve(2 * static_cast<size_t>(nf) / 2 + 1);
-  if (nf > 0)
-    build(0, nf, centroids);
+  if (nf > 0) build(0, nf, centroids);
 }
 
 int SurfaceLocator::build(int begin, int end, const std::vector<Vec3>& centroids)
@@ -84,8 +84,7 @@ int SurfaceLocator::build(int begin, int end, const std::vector<Vec3>& centroids
   for (int i = begin; i < end; ++i)
   {
     const int f = order_[i];
-    for (int k = 0; k < 3; ++k)
-      box.extend(mesh_.vertex(mesh_.F(f, k)));
+    for (int k = 0; k < 3; ++k) box.extend(mesh_.vertex(mesh_.F(f, k)));
     centroidBox.extend(centroids[f]);
   }
   nodes_[id].box = box;
@@ -111,24 +110,24 @@ int SurfaceLocator::build(int begin, int end, const std::vector<Vec3>& centroids
 SurfacePoint SurfaceLocator::closestPoint(const Vec3& query, double maxDistance) const
 {
   SurfacePoint best;
-  if (nodes_.empty())
-    return best;
-  double best2 = std::isfinite(maxDistance) ? maxDistance * maxDistance : std::numeric_limits<double>::infinity();
+  if (nodes_.empty()) return best;
+  double best2 = std::isfinite(maxDistance) ? maxDistance * maxDistance
+                                            : std::numeric_limits<double>::infinity();
   std::vector<int> stack{0};
   while (!stack.empty())
   {
     const Node& node = nodes_[stack.back()];
     stack.pop_back();
-    if (node.box.squaredExteriorDistance(query) > best2)
-      continue;
+    if (node.box.squaredExteriorDistance(query) > best2) continue;
     if (node.left < 0)
     {
       for (int i = node.begin; i < node.end; ++i)
       {
         const int f = order_[i];
         Vec3 bary;
-        const Vec3 p = closestPointOnTriangle(query, mesh_.vertex(mesh_.F(f, 0)), mesh_.vertex(mesh_.F(f, 1)),
-                                              mesh_.vertex(mesh_.F(f, 2)), bary);
+        const Vec3 p =
+            closestPointOnTriangle(query, mesh_.vertex(mesh_.F(f, 0)), mesh_.vertex(mesh_.F(f, 1)),
+                                   mesh_.vertex(mesh_.F(f, 2)), bary);
         const double d2 = (p - query).squaredNorm();
         if (d2 <= best2)
         {
@@ -154,15 +153,15 @@ SurfacePoint SurfaceLocator::closestPoint(const Vec3& query, double maxDistance)
       stack.push_back(node.right);
     }
   }
-  if (best.valid())
-    best.distance = std::sqrt(best2);
+  if (best.valid()) best.distance = std::sqrt(best2);
   return best;
 }
 
 namespace
 {
 // Parameter range [tmin, tmax] of the line inside the box; false when it misses.
-bool lineBoxRange(const Eigen::AlignedBox3d& box, const Vec3& o, const Vec3& d, double& tmin, double& tmax)
+bool lineBoxRange(const Eigen::AlignedBox3d& box, const Vec3& o, const Vec3& d, double& tmin,
+                  double& tmax)
 {
   tmin = -std::numeric_limits<double>::infinity();
   tmax = std::numeric_limits<double>::infinity();
@@ -170,13 +169,11 @@ bool lineBoxRange(const Eigen::AlignedBox3d& box, const Vec3& o, const Vec3& d, 
   {
     if (d[k] == 0)
     {
-      if (o[k] < box.min()[k] || o[k] > box.max()[k])
-        return false;
+      if (o[k] < box.min()[k] || o[k] > box.max()[k]) return false;
       continue;
     }
     double t0 = (box.min()[k] - o[k]) / d[k], t1 = (box.max()[k] - o[k]) / d[k];
-    if (t0 > t1)
-      std::swap(t0, t1);
+    if (t0 > t1) std::swap(t0, t1);
     tmin = std::max(tmin, t0);
     tmax = std::min(tmax, t1);
   }
@@ -187,8 +184,7 @@ bool lineBoxRange(const Eigen::AlignedBox3d& box, const Vec3& o, const Vec3& d, 
 std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec3& direction) const
 {
   std::vector<LineHit> hits;
-  if (nodes_.empty() || !(direction.squaredNorm() > 0))
-    return hits;
+  if (nodes_.empty() || !(direction.squaredNorm() > 0)) return hits;
   std::vector<int> stack{0};
   while (!stack.empty())
   {
@@ -200,8 +196,7 @@ std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec
     const Vec3 pad = Vec3::Constant(1e-9 * (1.0 + box.sizes().norm()));
     box.extend(box.min() - pad);
     box.extend(box.max() + pad);
-    if (!lineBoxRange(box, origin, direction, t0, t1))
-      continue;
+    if (!lineBoxRange(box, origin, direction, t0, t1)) continue;
     if (node.left >= 0)
     {
       stack.push_back(node.left);
@@ -217,17 +212,14 @@ std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec
       const Vec3 e1 = mesh_.vertex(mesh_.F(f, 1)) - a, e2 = mesh_.vertex(mesh_.F(f, 2)) - a;
       const Vec3 pvec = direction.cross(e2);
       const double det = e1.dot(pvec);
-      if (std::abs(det) < 1e-300)
-        continue;
+      if (std::abs(det) < 1e-300) continue;
       const double inv = 1.0 / det;
       const Vec3 tvec = origin - a;
       const double u = tvec.dot(pvec) * inv;
-      if (u < 0 || u > 1)
-        continue;
+      if (u < 0 || u > 1) continue;
       const Vec3 qvec = tvec.cross(e1);
       const double v = direction.dot(qvec) * inv;
-      if (v < 0 || u + v > 1)
-        continue;
+      if (v < 0 || u + v > 1) continue;
       LineHit hit;
       hit.t = e2.dot(qvec) * inv;
       hit.point.face = f;
@@ -241,8 +233,7 @@ std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec
   const double tol = 1e-9 / direction.norm();
   std::vector<LineHit> unique;
   for (const auto& h : hits)
-    if (unique.empty() || h.t - unique.back().t > tol)
-      unique.push_back(h);
+    if (unique.empty() || h.t - unique.back().t > tol) unique.push_back(h);
   return unique;
 }
 } // namespace clothtrack

@@ -44,8 +44,7 @@ Points vertexNormals(const TriangleMesh& mesh)
       const Vec3 e1 = mesh.vertex(mesh.F(f, (k + 1) % 3)) - mesh.vertex(i);
       const Vec3 e2 = mesh.vertex(mesh.F(f, (k + 2) % 3)) - mesh.vertex(i);
       const double denom = e1.norm() * e2.norm();
-      if (denom <= 0)
-        continue;
+      if (denom <= 0) continue;
       const double angle = std::acos(std::clamp(e1.dot(e2) / denom, -1.0, 1.0));
       normals.row(i) += angle * fn.row(f);
     }
@@ -53,18 +52,19 @@ Points vertexNormals(const TriangleMesh& mesh)
   for (int i = 0; i < mesh.numVertices(); ++i)
   {
     const double len = normals.row(i).norm();
-    if (len > 0)
-      normals.row(i) /= len;
+    if (len > 0) normals.row(i) /= len;
   }
   return normals;
 }
 
-double surfaceArea(const TriangleMesh& mesh) { return faceAreas(mesh).sum(); }
+double surfaceArea(const TriangleMesh& mesh)
+{
+  return faceAreas(mesh).sum();
+}
 
 double meanEdgeLength(const TriangleMesh& mesh)
 {
-  if (mesh.numFaces() == 0)
-    return 0.0;
+  if (mesh.numFaces() == 0) return 0.0;
   double sum = 0;
   for (int f = 0; f < mesh.numFaces(); ++f)
     for (int k = 0; k < 3; ++k)

@@ -9,7 +9,10 @@ using namespace clothtrack;
 
 namespace
 {
-Components analyse(const TriangleMesh& mesh) { return connectedComponents(mesh, buildTopology(mesh)); }
+Components analyse(const TriangleMesh& mesh)
+{
+  return connectedComponents(mesh, buildTopology(mesh));
+}
 } // namespace
 
 TEST(Components, SphereIsGenusZero)
@@ -57,8 +60,7 @@ TEST(Components, HolesAreBoundaries)
   Triangles kept(mesh.numFaces() - 2, 3);
   int row = 0;
   for (int f = 0; f < mesh.numFaces(); ++f)
-    if (f != 0 && f != mesh.numFaces() - 1)
-      kept.row(row++) = mesh.F.row(f);
+    if (f != 0 && f != mesh.numFaces() - 1) kept.row(row++) = mesh.F.row(f);
   mesh.F = kept;
   const Components c = analyse(mesh);
   ASSERT_EQ(c.count(), 1);

@@ -13,10 +13,11 @@ using clothtrack::test::writeText;
 
 TEST(FrameList, NaturalOrder)
 {
-  std::vector<std::string> names = {"mesh_10.obj", "mesh_2.obj", "mesh_1.obj", "mesh_001a.obj", "mesh_0100.obj"};
+  std::vector<std::string> names = {"mesh_10.obj", "mesh_2.obj", "mesh_1.obj", "mesh_001a.obj",
+                                    "mesh_0100.obj"};
   std::sort(names.begin(), names.end(), naturalLess);
-  EXPECT_EQ(names, (std::vector<std::string>{"mesh_1.obj", "mesh_001a.obj", "mesh_2.obj", "mesh_10.obj",
-                                             "mesh_0100.obj"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"mesh_1.obj", "mesh_001a.obj", "mesh_2.obj",
+                                             "mesh_10.obj", "mesh_0100.obj"}));
   EXPECT_EQ(frameNumberFromName("/data/take3/mesh_0174.obj"), 174);
   EXPECT_EQ(frameNumberFromName("dancer_fr0005.obj"), 5);
   EXPECT_EQ(frameNumberFromName("mesh.obj"), -1);

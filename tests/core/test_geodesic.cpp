@@ -42,9 +42,11 @@ ErrorStats sphereErrors(const TriangleMesh& mesh, int source, const Eigen::Vecto
 
 void report(const char* method, const ErrorStats& s)
 {
-  std::printf("[ measured ] sphere (10242 vertices) %-13s mean relative error %.3f %%, max abs error %.4f (radius 1)\n",
+  std::printf("[ measured ] sphere (10242 vertices) %-13s mean relative error %.3f %%, max abs "
+              "error %.4f (radius 1)\n",
               method, 100 * s.meanRelative, s.maxAbsolute);
-  testing::Test::RecordProperty(std::string(method) + "_mean_relative_error", std::to_string(s.meanRelative));
+  testing::Test::RecordProperty(std::string(method) + "_mean_relative_error",
+                                std::to_string(s.meanRelative));
 }
 } // namespace
 
@@ -52,10 +54,12 @@ TEST(Geodesic, SphereAgainstGreatCircle)
 {
   const TriangleMesh mesh = icosphere(5); // 10242 vertices
   const int source = 0;
-  const ErrorStats dijkstra =
-    sphereErrors(mesh, source, WavefrontGeodesic(mesh, WavefrontGeodesic::Method::Dijkstra).distances({source}));
+  const ErrorStats dijkstra = sphereErrors(
+      mesh, source,
+      WavefrontGeodesic(mesh, WavefrontGeodesic::Method::Dijkstra).distances({source}));
   const ErrorStats marching = sphereErrors(
-    mesh, source, WavefrontGeodesic(mesh, WavefrontGeodesic::Method::FastMarching).distances({source}));
+      mesh, source,
+      WavefrontGeodesic(mesh, WavefrontGeodesic::Method::FastMarching).distances({source}));
   const ErrorStats heat = sphereErrors(mesh, source, HeatGeodesic(mesh).distances({source}));
   report("Dijkstra", dijkstra);
   report("FastMarching", marching);
@@ -77,8 +81,7 @@ TEST(Geodesic, FastMarchingIsNearExactOnAPlane)
   for (int v = 0; v < mesh.numVertices(); ++v)
   {
     const double exact = (mesh.vertex(v) - mesh.vertex(center)).norm();
-    if (exact > 0)
-      worst = std::max(worst, std::abs(d[v] - exact) / exact);
+    if (exact > 0) worst = std::max(worst, std::abs(d[v] - exact) / exact);
   }
   std::printf("[ measured ] flat grid fast marching worst relative error %.4f %%\n", 100 * worst);
   EXPECT_LT(worst, 0.01);
@@ -157,7 +160,8 @@ TEST(Geodesic, SeedsAtASurfacePoint)
   const Vec3 bary(0.2, 0.3, 0.5);
   const Vec3 p = bary[0] * mesh.vertex(mesh.F(face, 0)) + bary[1] * mesh.vertex(mesh.F(face, 1)) +
                  bary[2] * mesh.vertex(mesh.F(face, 2));
-  const Eigen::VectorXd d = WavefrontGeodesic(mesh).distancesFromSeeds(seedsAtSurfacePoint(mesh, face, bary));
+  const Eigen::VectorXd d =
+      WavefrontGeodesic(mesh).distancesFromSeeds(seedsAtSurfacePoint(mesh, face, bary));
   for (int v = 0; v < mesh.numVertices(); ++v)
   {
     const double exact = (mesh.vertex(v) - p).norm();

@@ -28,7 +28,8 @@ TriangleMesh jitteredGrid(int n, double amount, unsigned seed)
 
 TEST(VoronoiArea, SumsToSurfaceArea)
 {
-  for (const TriangleMesh& mesh : {icosphere(3), torus(1.0, 0.25, 30, 12), jitteredGrid(12, 0.45, 3)})
+  for (const TriangleMesh& mesh :
+       {icosphere(3), torus(1.0, 0.25, 30, 12), jitteredGrid(12, 0.45, 3)})
   {
     const Eigen::VectorXd areas = mixedVoronoiAreas(mesh);
     EXPECT_NEAR(areas.sum(), surfaceArea(mesh), 1e-10 * surfaceArea(mesh));
@@ -57,8 +58,7 @@ TEST(CotanLaplacian, RowsSumToZeroAndLinearFunctionsAreHarmonic)
   const Eigen::VectorXd f = 2.0 * flat.V.col(0) - 3.0 * flat.V.col(1);
   const Eigen::VectorXd Lf = L * f;
   for (int i = 1; i < n; ++i)
-    for (int j = 1; j < n; ++j)
-      EXPECT_NEAR(Lf[i * (n + 1) + j], 0.0, 1e-10);
+    for (int j = 1; j < n; ++j) EXPECT_NEAR(Lf[i * (n + 1) + j], 0.0, 1e-10);
   // Symmetric positive semi-definite: x^T L x >= 0.
   const Eigen::VectorXd x = Eigen::VectorXd::Random(flat.numVertices());
   EXPECT_GE(x.dot(L * x), 0.0);

@@ -24,7 +24,8 @@ void expectSame(const TriangleMesh& a, const TriangleMesh& b)
 }
 
 // The error message must name the file and say what is wrong.
-void expectError(const std::function<void()>& read, const std::string& path, const std::string& words)
+void expectError(const std::function<void()>& read, const std::string& path,
+                 const std::string& words)
 {
   try
   {
@@ -53,11 +54,12 @@ TEST(MeshIO, ObjAndOffRoundTrip)
 TEST(MeshIO, ObjPolygonsNegativeIndicesAndSlashForms)
 {
   const std::string dir = scratchDir("meshio-obj");
-  const std::string path = writeText(dir + "/quad.obj", "# a quad and a triangle\n"
-                                                        "o thing\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\r\n"
-                                                        "vn 0 0 1\nvt 0 0\n"
-                                                        "f 1/1/1 2/1/1 3//1 4\n"
-                                                        "v 2 0 0\nf -4 -1 -3\n");
+  const std::string path =
+      writeText(dir + "/quad.obj", "# a quad and a triangle\n"
+                                   "o thing\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\r\n"
+                                   "vn 0 0 1\nvt 0 0\n"
+                                   "f 1/1/1 2/1/1 3//1 4\n"
+                                   "v 2 0 0\nf -4 -1 -3\n");
   const TriangleMesh mesh = readOBJ(path);
   EXPECT_EQ(mesh.numVertices(), 5);
   ASSERT_EQ(mesh.numFaces(), 3);
@@ -69,8 +71,8 @@ TEST(MeshIO, ObjPolygonsNegativeIndicesAndSlashForms)
 TEST(MeshIO, OffWithPolygonsAndColours)
 {
   const std::string dir = scratchDir("meshio-off");
-  const std::string path =
-    writeText(dir + "/q.off", "OFF\n# comment\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 255 0 0\n");
+  const std::string path = writeText(
+      dir + "/q.off", "OFF\n# comment\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 255 0 0\n");
   const TriangleMesh mesh = readOFF(path);
   EXPECT_EQ(mesh.numFaces(), 2);
 }
@@ -89,27 +91,31 @@ TEST(MeshIO, BadFilesGiveClearErrors)
   expectError([&] { readOBJ(truncated); }, truncated, "malformed vertex");
   const std::string shortFace = writeText(dir + "/short.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n");
   expectError([&] { readOBJ(shortFace); }, shortFace, "fewer than 3");
-  const std::string garbage = writeText(dir + "/garbage.obj", std::string("v 1 2 3\n\0\x01\x02", 11));
+  const std::string garbage =
+      writeText(dir + "/garbage.obj", std::string("v 1 2 3\n\0\x01\x02", 11));
   expectError([&] { readOBJ(garbage); }, garbage, "NUL");
-  const std::string offTruncated = writeText(dir + "/trunc.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
+  const std::string offTruncated =
+      writeText(dir + "/trunc.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
   expectError([&] { readOFF(offTruncated); }, offTruncated, "truncated");
   const std::string notOff = writeText(dir + "/not.off", "PLY\n3 1 0\n");
   expectError([&] { readOFF(notOff); }, notOff, "not an OFF file");
-  const std::string offRange = writeText(dir + "/range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+  const std::string offRange =
+      writeText(dir + "/range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
   expectError([&] { readOFF(offRange); }, offRange, "out of range");
 }
 
 TEST(MeshIO, PlyAsciiWithExtraElementsAndProperties)
 {
   const std::string dir = scratchDir("meshio-ply");
-  const std::string path = writeText(dir + "/q.ply", "ply\nformat ascii 1.0\ncomment made by hand\n"
-                                                     "element vertex 4\nproperty float x\nproperty float y\n"
-                                                     "property float z\nproperty uchar red\n"
-                                                     "element face 1\nproperty list uchar int vertex_indices\n"
-                                                     "property int flags\n"
-                                                     "element edge 1\nproperty int vertex1\nproperty int vertex2\n"
-                                                     "end_header\n0 0 0 9\n1 0 0 9\n1 1 0 9\n0 1 0 9\n"
-                                                     "4 0 1 2 3 7\n0 1\n");
+  const std::string path =
+      writeText(dir + "/q.ply", "ply\nformat ascii 1.0\ncomment made by hand\n"
+                                "element vertex 4\nproperty float x\nproperty float y\n"
+                                "property float z\nproperty uchar red\n"
+                                "element face 1\nproperty list uchar int vertex_indices\n"
+                                "property int flags\n"
+                                "element edge 1\nproperty int vertex1\nproperty int vertex2\n"
+                                "end_header\n0 0 0 9\n1 0 0 9\n1 1 0 9\n0 1 0 9\n"
+                                "4 0 1 2 3 7\n0 1\n");
   const TriangleMesh mesh = readPLY(path);
   EXPECT_EQ(mesh.numVertices(), 4);
   ASSERT_EQ(mesh.numFaces(), 2);
@@ -120,10 +126,12 @@ TEST(MeshIO, PlyAsciiWithExtraElementsAndProperties)
 TEST(MeshIO, PlyBinaryBothEndiannesses)
 {
   const std::string dir = scratchDir("meshio-plybin");
-  auto be32 = [](uint32_t v)
-  { return std::string{char(v >> 24), char((v >> 16) & 255), char((v >> 8) & 255), char(v & 255)}; };
-  auto le32 = [](uint32_t v)
-  { return std::string{char(v & 255), char((v >> 8) & 255), char((v >> 16) & 255), char(v >> 24)}; };
+  auto be32 = [](uint32_t v) {
+    return std::string{char(v >> 24), char((v >> 16) & 255), char((v >> 8) & 255), char(v & 255)};
+  };
+  auto le32 = [](uint32_t v) {
+    return std::string{char(v & 255), char((v >> 8) & 255), char((v >> 16) & 255), char(v >> 24)};
+  };
   for (bool big : {false, true})
   {
     std::string body;
@@ -135,11 +143,11 @@ TEST(MeshIO, PlyBinaryBothEndiannesses)
       body += big ? be32(bits) : le32(bits);
     }
     body += char(3);
-    for (uint32_t i : {0u, 1u, 2u})
-      body += big ? be32(i) : le32(i);
-    const std::string head = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
-                             " 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    for (uint32_t i : {0u, 1u, 2u}) body += big ? be32(i) : le32(i);
+    const std::string head =
+        std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+        " 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     const std::string path = writeText(dir + (big ? "/be.ply" : "/le.ply"), head + body);
     const TriangleMesh mesh = readPLY(path);
     ASSERT_EQ(mesh.numFaces(), 1);
@@ -148,11 +156,13 @@ TEST(MeshIO, PlyBinaryBothEndiannesses)
     const std::string cut = writeText(dir + "/cut.ply", head + body.substr(0, body.size() - 3));
     expectError([&] { readPLY(cut); }, cut, "truncated");
   }
-  const std::string noEnd = writeText(dir + "/noend.ply", "ply\nformat ascii 1.0\nelement vertex 3\n");
+  const std::string noEnd =
+      writeText(dir + "/noend.ply", "ply\nformat ascii 1.0\nelement vertex 3\n");
   expectError([&] { readPLY(noEnd); }, noEnd, "end_header");
-  const std::string badIndex = writeText(dir + "/bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                                                           "property float y\nproperty float z\nelement face 1\n"
-                                                           "property list uchar int vertex_indices\nend_header\n"
-                                                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n");
+  const std::string badIndex =
+      writeText(dir + "/bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                  "property float y\nproperty float z\nelement face 1\n"
+                                  "property list uchar int vertex_indices\nend_header\n"
+                                  "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n");
   expectError([&] { readPLY(badIndex); }, badIndex, "out of range");
 }

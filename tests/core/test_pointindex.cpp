@@ -14,8 +14,7 @@ Points randomPoints(int n, unsigned seed)
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1, 1);
   Points p(n, 3);
-  for (int i = 0; i < n; ++i)
-    p.row(i) << u(rng), u(rng), u(rng);
+  for (int i = 0; i < n; ++i) p.row(i) << u(rng), u(rng), u(rng);
   return p;
 }
 } // namespace
@@ -40,15 +39,15 @@ TEST(PointIndex, MatchesBruteForce)
 
     const auto knn = index.nearest(query, 5);
     ASSERT_EQ(knn.size(), 5u);
-    for (int k = 0; k < 5; ++k)
-      EXPECT_NEAR(knn[k].distance, all[k].first, 1e-12);
+    for (int k = 0; k < 5; ++k) EXPECT_NEAR(knn[k].distance, all[k].first, 1e-12);
 
     const double radius = 0.2;
     const auto within = index.withinRadius(query, radius);
-    const auto expected = std::count_if(all.begin(), all.end(), [&](const auto& a) { return a.first <= radius; });
-    EXPECT_NEAR(static_cast<double>(within.size()), static_cast<double>(expected), 1.0); // float radius bound
-    for (const auto& n : within)
-      EXPECT_LE(n.distance, radius * (1 + 1e-6));
+    const auto expected =
+        std::count_if(all.begin(), all.end(), [&](const auto& a) { return a.first <= radius; });
+    EXPECT_NEAR(static_cast<double>(within.size()), static_cast<double>(expected),
+                1.0); // float radius bound
+    for (const auto& n : within) EXPECT_LE(n.distance, radius * (1 + 1e-6));
   }
 }
 

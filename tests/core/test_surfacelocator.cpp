@@ -20,15 +20,17 @@ TEST(SurfaceLocator, ClosestPointMatchesBruteForce)
     for (int f = 0; f < mesh.numFaces(); ++f)
     {
       Vec3 bary;
-      const Vec3 p = closestPointOnTriangle(query, mesh.vertex(mesh.F(f, 0)), mesh.vertex(mesh.F(f, 1)),
-                                            mesh.vertex(mesh.F(f, 2)), bary);
+      const Vec3 p =
+          closestPointOnTriangle(query, mesh.vertex(mesh.F(f, 0)), mesh.vertex(mesh.F(f, 1)),
+                                 mesh.vertex(mesh.F(f, 2)), bary);
       best = std::min(best, (p - query).norm());
     }
     const SurfacePoint sp = locator.closestPoint(query);
     ASSERT_TRUE(sp.valid());
     EXPECT_NEAR(sp.distance, best, 1e-12);
     // Barycentric coordinates reproduce the position.
-    const Vec3 rebuilt = sp.bary[0] * mesh.vertex(mesh.F(sp.face, 0)) + sp.bary[1] * mesh.vertex(mesh.F(sp.face, 1)) +
+    const Vec3 rebuilt = sp.bary[0] * mesh.vertex(mesh.F(sp.face, 0)) +
+                         sp.bary[1] * mesh.vertex(mesh.F(sp.face, 1)) +
                          sp.bary[2] * mesh.vertex(mesh.F(sp.face, 2));
     EXPECT_LT((rebuilt - sp.position).norm(), 1e-12);
     EXPECT_NEAR(sp.bary.sum(), 1.0, 1e-12);
@@ -55,8 +57,7 @@ TEST(SurfaceLocator, LineThroughSphereHitsTwiceSorted)
   ASSERT_EQ(hits.size(), 2u);
   EXPECT_NEAR(hits[0].t, -1.0, 0.01);
   EXPECT_NEAR(hits[1].t, 1.0, 0.01);
-  for (const auto& h : hits)
-    EXPECT_LT((h.point.position - h.t * direction).norm(), 1e-12);
+  for (const auto& h : hits) EXPECT_LT((h.point.position - h.t * direction).norm(), 1e-12);
 }
 
 TEST(SurfaceLocator, LineThroughTorus)

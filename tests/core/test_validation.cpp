@@ -58,8 +58,8 @@ TEST(Validation, RemovesZeroAreaRepeatedFacesAndUnusedVertices)
   const int faces = mesh.numFaces();
   Triangles f(faces + 3, 3);
   f.topRows(faces) = mesh.F;
-  f.row(faces) << 0, 1, 2;         // collinear: zero area
-  f.row(faces + 1) << 5, 5, 6;     // collapsed
+  f.row(faces) << 0, 1, 2;                    // collinear: zero area
+  f.row(faces + 1) << 5, 5, 6;                // collapsed
   f.row(faces + 2) = mesh.F.row(0).reverse(); // same triangle, other winding
   mesh.F = f;
   Points v(mesh.numVertices() + 1, 3);

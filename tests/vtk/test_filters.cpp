@@ -20,7 +20,8 @@ using namespace clothtrack;
 TEST(GeodesicDistanceFilter, SphereDistancesFromAPole)
 {
   const TriangleMesh sphere = icosphere(4, 2.0);
-  for (int method : {ctGeodesicDistance::DIJKSTRA, ctGeodesicDistance::FAST_MARCHING, ctGeodesicDistance::HEAT})
+  for (int method :
+       {ctGeodesicDistance::DIJKSTRA, ctGeodesicDistance::FAST_MARCHING, ctGeodesicDistance::HEAT})
   {
     SCOPED_TRACE(method);
     vtkNew<ctGeodesicDistance> filter;
@@ -33,7 +34,9 @@ TEST(GeodesicDistanceFilter, SphereDistancesFromAPole)
     double meanError = 0;
     const Vec3 p0 = sphere.vertex(0).normalized();
     for (int v = 0; v < sphere.numVertices(); ++v)
-      meanError += std::abs(d->GetTuple1(v) - 2.0 * std::acos(std::clamp(p0.dot(sphere.vertex(v).normalized()), -1.0, 1.0)));
+      meanError +=
+          std::abs(d->GetTuple1(v) -
+                   2.0 * std::acos(std::clamp(p0.dot(sphere.vertex(v).normalized()), -1.0, 1.0)));
     meanError /= sphere.numVertices();
     EXPECT_LT(meanError, method == ctGeodesicDistance::DIJKSTRA ? 0.25 : 0.05);
   }
@@ -79,8 +82,7 @@ TEST(SurfaceTopologyFilter, TorusAndSphere)
   EXPECT_EQ(genus->GetTuple1(1), 0);
   vtkDataArray* area = out->GetPointData()->GetArray("VoronoiArea");
   double sum = 0;
-  for (vtkIdType i = 0; i < area->GetNumberOfTuples(); ++i)
-    sum += area->GetTuple1(i);
+  for (vtkIdType i = 0; i < area->GetNumberOfTuples(); ++i) sum += area->GetTuple1(i);
   EXPECT_NEAR(sum, surfaceArea(both), 1e-9);
   EXPECT_EQ(out->GetFieldData()->GetArray("NonManifoldEdges")->GetTuple1(0), 0);
 }

@@ -39,19 +39,17 @@ struct ErrorWatch
   {
     command->SetClientData(this);
     command->SetCallback(
-      [](vtkObject*, unsigned long, void* client, void* data)
-      {
-        auto* self = static_cast<ErrorWatch*>(client);
-        if (self->message.empty())
-          self->message = static_cast<const char*>(data);
-      });
+        [](vtkObject*, unsigned long, void* client, void* data)
+        {
+          auto* self = static_cast<ErrorWatch*>(client);
+          if (self->message.empty()) self->message = static_cast<const char*>(data);
+        });
     object->AddObserver(vtkCommand::ErrorEvent, command);
     object->AddObserver(vtkCommand::WarningEvent, command);
   }
 };
 
-template <class Writer>
-void writeWith(vtkPolyData* data, const std::string& path)
+template <class Writer> void writeWith(vtkPolyData* data, const std::string& path)
 {
   vtkNew<Writer> writer;
   writer->SetInputData(data);
@@ -67,7 +65,10 @@ TriangleMesh testFrame(int k)
   return mesh;
 }
 
-double readX0(vtkPolyData* frame) { return frame->GetPoint(0)[0]; }
+double readX0(vtkPolyData* frame)
+{
+  return frame->GetPoint(0)[0];
+}
 } // namespace
 
 TEST(SequenceReader, EveryFormatRoundTrips)
@@ -101,8 +102,7 @@ TEST(SequenceReader, EveryFormatRoundTrips)
 TEST(SequenceReader, TemporalFramesInNaturalOrder)
 {
   const std::string dir = scratchDir("reader-sequence");
-  for (int k : {0, 1, 2, 10})
-    writeOBJ(dir + "/frame_" + std::to_string(k) + ".obj", testFrame(k));
+  for (int k : {0, 1, 2, 10}) writeOBJ(dir + "/frame_" + std::to_string(k) + ".obj", testFrame(k));
   vtkNew<ctMeshSequenceReader> reader;
   reader->SetFileName(dir.c_str());
   reader->SetFrameRate(10);
@@ -162,8 +162,7 @@ TEST(SequenceReader, UnitsAndUpAxis)
 TEST(SequenceReader, GlobPatternAndListFile)
 {
   const std::string dir = scratchDir("reader-glob");
-  for (int k = 0; k < 3; ++k)
-    writeOBJ(dir + "/mesh_" + std::to_string(k) + ".obj", testFrame(k));
+  for (int k = 0; k < 3; ++k) writeOBJ(dir + "/mesh_" + std::to_string(k) + ".obj", testFrame(k));
   writeOBJ(dir + "/other.obj", testFrame(5));
   vtkNew<ctMeshSequenceReader> reader;
   reader->SetFileName((dir + "/mesh_*.obj").c_str());
@@ -185,8 +184,7 @@ void expectReadError(const std::string& spec, const std::vector<std::string>& wo
   reader->SetFileName(spec.c_str());
   reader->Update(port);
   ASSERT_FALSE(watch.message.empty()) << "no error for " << spec;
-  for (const auto& w : words)
-    EXPECT_NE(watch.message.find(w), std::string::npos) << watch.message;
+  for (const auto& w : words) EXPECT_NE(watch.message.find(w), std::string::npos) << watch.message;
   if (port == 0)
   {
     EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
@@ -208,19 +206,23 @@ TEST(SequenceReader, BadInputGivesClearErrors)
   expectReadError(range, {range, "out of range"});
   const std::string nan = writeText(dir + "/nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
   expectReadError(nan, {nan, "NaN"});
-  const std::string inf = writeText(dir + "/inf.off", "OFF\n3 1 0\n0 0 0\ninf 0 0\n0 1 0\n3 0 1 2\n");
+  const std::string inf =
+      writeText(dir + "/inf.off", "OFF\n3 1 0\n0 0 0\ninf 0 0\n0 1 0\n3 0 1 2\n");
   expectReadError(inf, {inf, "NaN or infinite"});
   const std::string points = writeText(dir + "/points.obj", "v 0 0 0\nv 1 0 0\n");
   expectReadError(points, {points, "no face"});
   const std::string flat = writeText(dir + "/flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
   expectReadError(flat, {flat, "zero area"});
-  const std::string badPly = writeText(dir + "/bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\n");
+  const std::string badPly =
+      writeText(dir + "/bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\n");
   expectReadError(badPly, {badPly});
   const std::string badVtp = writeText(dir + "/bad.vtp", "<VTKFile type=\"PolyData\"><PolyData>");
   expectReadError(badVtp, {badVtp});
-  const std::string badVtk = writeText(dir + "/bad.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET STRUCTURED_POINTS\n");
+  const std::string badVtk = writeText(
+      dir + "/bad.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET STRUCTURED_POINTS\n");
   expectReadError(badVtk, {badVtk});
-  const std::string badStl = writeText(dir + "/bad.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n");
+  const std::string badStl =
+      writeText(dir + "/bad.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n");
   expectReadError(badStl, {badStl});
   // A corrupt frame inside a sequence is named when the whole sequence is read.
   const std::string seq = dir + "/seq";
@@ -233,8 +235,9 @@ TEST(SequenceReader, BadInputGivesClearErrors)
 TEST(SequenceReader, DuplicatedVerticesAndZeroAreaFacesAreRepairedWithAWarning)
 {
   const std::string dir = scratchDir("reader-repair");
-  const std::string path = writeText(dir + "/dup.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\n"
-                                                       "v 2 0 0\nf 1 2 3\nf 4 5 6\nf 1 2 7\n");
+  const std::string path =
+      writeText(dir + "/dup.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\n"
+                                  "v 2 0 0\nf 1 2 3\nf 4 5 6\nf 1 2 7\n");
   vtkNew<ctMeshSequenceReader> reader;
   ErrorWatch watch(reader);
   reader->SetFileName(path.c_str());

@@ -42,8 +42,7 @@ std::string slurp(const std::string& path)
 TEST(SequenceWriter, TemporalInputWritesEveryStep)
 {
   const std::string in = scratchDir("writer-in"), out = scratchDir("writer-out");
-  for (int k = 0; k < 5; ++k)
-    writeOBJ(in + "/s_" + std::to_string(k) + ".obj", shifted(k));
+  for (int k = 0; k < 5; ++k) writeOBJ(in + "/s_" + std::to_string(k) + ".obj", shifted(k));
   vtkNew<ctMeshSequenceReader> reader;
   reader->SetFileName(in.c_str());
   vtkNew<ctMeshSequenceWriter> writer;
@@ -61,7 +60,8 @@ TEST(SequenceWriter, TemporalInputWritesEveryStep)
   }
   EXPECT_FALSE(fs::exists(out + "/seq.pvd.part"));
   const std::string pvd = slurp(out + "/seq.pvd");
-  EXPECT_NE(pvd.find("timestep=\"0.16\" part=\"0\" file=\"seq/seq_0004.vtp\""), std::string::npos) << pvd;
+  EXPECT_NE(pvd.find("timestep=\"0.16\" part=\"0\" file=\"seq/seq_0004.vtp\""), std::string::npos)
+      << pvd;
 
   // Read back the written collection's frames: same geometry, same order.
   vtkNew<ctMeshSequenceReader> back;
@@ -81,15 +81,15 @@ TEST(SequenceWriter, MultiBlockInput)
   const std::string out = scratchDir("writer-mb");
   vtkNew<vtkMultiBlockDataSet> blocks;
   blocks->SetNumberOfBlocks(3);
-  for (unsigned k = 0; k < 3; ++k)
-    blocks->SetBlock(k, toPolyData(shifted(static_cast<int>(k))));
+  for (unsigned k = 0; k < 3; ++k) blocks->SetBlock(k, toPolyData(shifted(static_cast<int>(k))));
   vtkNew<ctMeshSequenceWriter> writer;
   writer->SetInputData(blocks);
   writer->SetFrameRate(2);
   writer->SetFileName((out + "/mb.pvd").c_str());
   ASSERT_EQ(writer->Write(), 1);
   EXPECT_EQ(writer->GetNumberOfFramesWritten(), 3);
-  EXPECT_NE(slurp(out + "/mb.pvd").find("timestep=\"1\" part=\"0\" file=\"mb/mb_0002.vtp\""), std::string::npos);
+  EXPECT_NE(slurp(out + "/mb.pvd").find("timestep=\"1\" part=\"0\" file=\"mb/mb_0002.vtp\""),
+            std::string::npos);
 }
 
 TEST(SequenceWriter, UnwritableFolderFails)
