@@ -16,6 +16,7 @@ private:
   std::string label_;
   int total_;
   std::chrono::steady_clock::time_point start_;
+  double lastPrinted_ = -1e9;
   bool interactive_;
 };
 } // namespace clothtrack::app
