@@ -27,6 +27,9 @@ const std::map<std::string, Command>& commands()
       {"convert",
        {clothtrack::app::runConvert,
         "read a sequence and write it as a .pvd collection (and OBJ)"}},
+      {"body-model",
+       {clothtrack::app::runBodyModel,
+        "write the built-in body model file, or a body of a given shape"}},
   };
   return table;
 }

@@ -50,3 +50,11 @@ file(WRITE ${WORK}/bad/a_1.obj "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n")
 expect_run(1 "a_1.obj: vertex 1 has a NaN" inspect ${WORK}/bad)
 file(WRITE ${WORK}/bad/a_1.obj "")
 expect_run(1 "a_1.obj: empty file" convert ${WORK}/bad -o ${WORK}/bad.pvd)
+
+# The built-in body model: written as a model file and as a shaped mesh.
+expect_run(0 "40 landmarks" body-model -o ${WORK}/model.vtp --mesh ${WORK}/body.obj --beta 1.0,-0.5)
+if (NOT EXISTS ${WORK}/model.vtp OR NOT EXISTS ${WORK}/body.obj)
+  message(FATAL_ERROR "body-model did not write its files")
+endif ()
+expect_run(1 "--beta takes comma-separated numbers" body-model --mesh ${WORK}/b.obj --beta 1,x)
+expect_run(1 "nothing to do" body-model)

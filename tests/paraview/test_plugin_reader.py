@@ -47,6 +47,13 @@ geodesic.UpdatePipeline(0.0)
 distances = servermanager.Fetch(geodesic).GetPointData().GetArray("GeodesicDistance")
 check(abs(distances.GetValue(1) - 1.0) < 1e-9, "geodesic distance to vertex 1: %g" % distances.GetValue(1))
 
+body = ClothTrackBodyModel()
+body.ShapeCoefficients = [1.0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
+body.UpdatePipeline()
+mesh = servermanager.Fetch(body)
+check(5000 <= mesh.GetNumberOfPoints() <= 15000, "body model vertices %d" % mesh.GetNumberOfPoints())
+check(mesh.GetPointData().GetArray("SkinWeights").GetNumberOfComponents() == 22, "skin weights")
+
 if shared and os.path.isdir(os.path.join(shared, "vlasic-samba")):
     samba = ClothTrackSequenceReader(FileName=os.path.join(shared, "vlasic-samba"))
     samba.UpdatePipelineInformation()

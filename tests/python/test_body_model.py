@@ -1,0 +1,47 @@
+"""The body model from Python: shape, pose and landmarks as numpy arrays."""
+
+import unittest
+
+import numpy as np
+import clothtrack
+from vtkmodules.util import numpy_support
+
+
+def body_points(source, port=0):
+    source.Update()
+    return numpy_support.vtk_to_numpy(source.GetOutputDataObject(port).GetPoints().GetData())
+
+
+class BodyModelTest(unittest.TestCase):
+    def test_shape_changes_the_body_and_pose_moves_the_arm(self):
+        mean = clothtrack.ctBodyModelSource()
+        rest = body_points(mean).copy()
+        height = rest[:, 1].max() - rest[:, 1].min()
+        self.assertGreater(height, 1.55)
+        self.assertLess(height, 1.90)
+
+        tall = clothtrack.ctBodyModelSource()
+        tall.SetShapeCoefficient(0, 2.0)
+        shaped = body_points(tall)
+        self.assertEqual(shaped.shape, rest.shape)
+        self.assertGreater(np.abs(shaped - rest).max(), 0.02)
+
+        raised = clothtrack.ctBodyModelSource()
+        raised.SetJointRotation(7, 0.0, 0.0, 1.0)  # left shoulder up
+        posed = body_points(raised)
+        moved = np.linalg.norm(posed - rest, axis=1) > 0.02
+        self.assertTrue(np.all(rest[moved, 0] > 0.0))  # only the left arm side moves
+        self.assertGreater(posed[:, 1].max(), rest[:, 1].max() - 0.01)
+
+    def test_forty_landmarks_with_names(self):
+        source = clothtrack.ctBodyModelSource()
+        landmarks = body_points(source, 1)
+        self.assertEqual(landmarks.shape, (40, 3))
+        names = source.GetLandmarksOutput().GetPointData().GetAbstractArray("LandmarkName")
+        all_names = {names.GetValue(k) for k in range(40)}
+        for expected in ("forehead", "left_wrist", "right_heel", "belly"):
+            self.assertIn(expected, all_names)
+
+
+if __name__ == "__main__":
+    unittest.main()
