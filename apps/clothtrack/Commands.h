@@ -11,6 +11,7 @@ using Args = std::vector<std::string>;
 int runInspect(const Args& args);
 int runConvert(const Args& args);
 int runBodyModel(const Args& args);
+int runSimulateCapture(const Args& args);
 
 /// Raised for a user error (bad option, bad path); main prints the message as one line.
 struct UsageError

@@ -30,6 +30,9 @@ const std::map<std::string, Command>& commands()
       {"body-model",
        {clothtrack::app::runBodyModel,
         "write the built-in body model file, or a body of a given shape"}},
+      {"simulate-capture",
+       {clothtrack::app::runSimulateCapture,
+        "re-mesh a ground-truth sequence as a multi-view capture would, with the source map"}},
   };
   return table;
 }

@@ -58,3 +58,11 @@ if (NOT EXISTS ${WORK}/model.vtp OR NOT EXISTS ${WORK}/body.obj)
 endif ()
 expect_run(1 "--beta takes comma-separated numbers" body-model --mesh ${WORK}/b.obj --beta 1,x)
 expect_run(1 "nothing to do" body-model)
+
+# simulate-capture: the shaped body becomes an independently re-meshed capture with a source map.
+expect_run(0 "wrote 1 captured frames" simulate-capture ${WORK}/body.obj -o ${WORK}/capture --voxel 0.02 --holes 2)
+if (NOT EXISTS ${WORK}/capture/frames/frame_0000.obj OR NOT EXISTS ${WORK}/capture/source_map/frame_0000.vtp)
+  message(FATAL_ERROR "simulate-capture did not write its outputs")
+endif ()
+expect_run(1 "--voxel must be between" simulate-capture ${WORK}/body.obj -o ${WORK}/capture --voxel 5)
+expect_run(1 "no such file or folder" simulate-capture ${WORK}/none -o ${WORK}/capture)

@@ -74,6 +74,25 @@ TriangleMesh BodyModel::posed(const Eigen::VectorXd& beta, const BodyPose& bodyP
   return out;
 }
 
+Points BodyModel::posedJoints(const Eigen::VectorXd& beta, const BodyPose& bodyPose) const
+{
+  Points v, j;
+  shape(beta, v, j);
+  std::vector<Eigen::Matrix4d> world;
+  pose(Points(0, 3), j, bodyPose, &world);
+  Points out(NumJoints, 3);
+  for (int k = 0; k < NumJoints; ++k) out.row(k) = world[k].topRightCorner<3, 1>().transpose();
+  return out;
+}
+
+BodyPose BodyModel::grounded(const Eigen::VectorXd& beta, const BodyPose& bodyPose) const
+{
+  BodyPose out = bodyPose;
+  const TriangleMesh body = posed(beta, bodyPose);
+  out.translation.y() -= body.V.col(1).minCoeff();
+  return out;
+}
+
 int BodyModel::landmarkIndex(const std::string& name) const
 {
   for (size_t i = 0; i < landmarks.size(); ++i)

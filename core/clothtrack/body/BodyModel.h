@@ -50,6 +50,13 @@ struct BodyModel
   TriangleMesh posed(const Eigen::VectorXd& beta, const BodyPose& pose,
                      Points* posedJoints = nullptr) const;
 
+  /// Joint positions of shape beta in `pose` (cheap: no skinning).
+  Points posedJoints(const Eigen::VectorXd& beta, const BodyPose& pose) const;
+
+  /// `pose` with its vertical translation adjusted so that the lowest vertex of the posed body
+  /// touches the floor (y = 0).
+  BodyPose grounded(const Eigen::VectorXd& beta, const BodyPose& pose) const;
+
   /// Index of a landmark by name, -1 if absent.
   int landmarkIndex(const std::string& name) const;
 };

@@ -1,0 +1,28 @@
+#pragma once
+// Procedural motions as joint-angle curves over time, for the synthetic captures. Rotations
+// follow BodyPose: axis-angle in world axes at rest (A-pose, facing +Z, left on +X). Feet are
+// not pinned here: groundedPose() in BodyModel users lifts or lowers the body onto the floor.
+#include "BodyModel.h"
+
+#include <string>
+#include <vector>
+
+namespace clothtrack
+{
+enum class MotionType
+{
+  Walk,     ///< walking forward along +Z, arms swinging
+  Turn,     ///< turning on the spot, one full turn every 4 s, small steps
+  Squat,    ///< squats every 3 s, arms forward
+  ArmRaise, ///< arms from hanging against the body to overhead and back, every 3 s
+  Wave,     ///< right arm raised and waving
+  Dance     ///< a samba-like dance: hip sway, alternating steps, arms in and out
+};
+
+/// "walk", "turn", "squat", "armraise", "wave", "dance"; throws Error on anything else.
+MotionType motionFromName(const std::string& name);
+const std::vector<std::string>& motionNames();
+
+/// Pose at `time` seconds.
+BodyPose motionPose(MotionType motion, double time);
+} // namespace clothtrack
