@@ -72,11 +72,14 @@ void fillClosed(const TriangleMesh& closed, Grid& grid)
                    });
 }
 
-// Marks the voxels within half the thickness of an open surface.
+// Occupancy around an open surface, soft so that the 0.5 level lies at `radius` from the
+// sheet: radius is half the thickness, but at least 0.6 voxel so that a sheet passing between
+// voxel centres leaves no gap.
 void fillSheet(const TriangleMesh& sheet, double thickness, Grid& grid)
 {
   const SurfaceLocator locator(sheet);
-  const double reach = 0.5 * thickness + grid.h;
+  const double radius = std::max(0.5 * thickness, 0.6 * grid.h);
+  const double reach = radius + grid.h;
   for (int f = 0; f < sheet.numFaces(); ++f)
   {
     Eigen::AlignedBox3d box;
@@ -95,10 +98,66 @@ void fillSheet(const TriangleMesh& sheet, double thickness, Grid& grid)
         for (int i = lo[0]; i <= hi[0]; ++i)
         {
           float& v = grid.values[grid.index(i, j, k)];
-          if (v < 1.0f && locator.closestPoint(grid.point(i, j, k), 0.5 * thickness).valid())
-            v = 1.0f;
+          if (v >= 1.0f) continue;
+          const SurfacePoint p = locator.closestPoint(grid.point(i, j, k), reach);
+          if (p.valid())
+            v = std::max(
+                v, static_cast<float>(std::clamp(0.5 + (radius - p.distance) / grid.h, 0.0, 1.0)));
         }
   }
+}
+
+// Fills, in every horizontal slice, the empty regions enclosed by occupied voxels: cameras
+// around the person cannot see into them (the inside of a dress, the gap closed by an arm
+// against the torso), so a multi-view reconstruction fills them like a visual hull.
+void fillEnclosed(Grid& grid)
+{
+  const int nx = grid.n[0], nz = grid.n[2];
+  vtkSMPTools::For(0, grid.n[1],
+                   [&](vtkIdType j0, vtkIdType j1)
+                   {
+                     std::vector<char> outside(static_cast<size_t>(nx) * nz);
+                     std::vector<int> stack;
+                     for (vtkIdType j = j0; j < j1; ++j)
+                     {
+                       std::fill(outside.begin(), outside.end(), 0);
+                       auto empty = [&](int i, int k)
+                       { return grid.values[grid.index(i, static_cast<int>(j), k)] < 0.5f; };
+                       auto push = [&](int i, int k)
+                       {
+                         const size_t id = i + static_cast<size_t>(nx) * k;
+                         if (!outside[id] && empty(i, k))
+                         {
+                           outside[id] = 1;
+                           stack.push_back(static_cast<int>(id));
+                         }
+                       };
+                       for (int i = 0; i < nx; ++i)
+                       {
+                         push(i, 0);
+                         push(i, nz - 1);
+                       }
+                       for (int k = 0; k < nz; ++k)
+                       {
+                         push(0, k);
+                         push(nx - 1, k);
+                       }
+                       while (!stack.empty())
+                       {
+                         const int id = stack.back();
+                         stack.pop_back();
+                         const int i = id % nx, k = id / nx;
+                         if (i > 0) push(i - 1, k);
+                         if (i + 1 < nx) push(i + 1, k);
+                         if (k > 0) push(i, k - 1);
+                         if (k + 1 < nz) push(i, k + 1);
+                       }
+                       for (int k = 0; k < nz; ++k)
+                         for (int i = 0; i < nx; ++i)
+                           if (!outside[i + static_cast<size_t>(nx) * k])
+                             grid.values[grid.index(i, static_cast<int>(j), k)] = 1.0f;
+                     }
+                   });
 }
 
 // Separable [1 2 1]/4 smoothing, so that the extracted surface is not a staircase.
@@ -176,6 +235,7 @@ TriangleMesh simulateCapture(const TriangleMesh& truth, const CaptureOptions& op
     else
       fillSheet(part, options.sheetThickness, grid);
   }
+  if (options.fillEnclosed) fillEnclosed(grid);
   smooth(grid);
 
   vtkNew<vtkImageData> image;

@@ -21,6 +21,9 @@ struct CaptureOptions
   int holes = 0;                 ///< random holes punched per frame
   double holeRadius = 0.03;      ///< metres
   double noise = 0.0;            ///< standard deviation of normal noise, metres
+  /// Fill what cameras around the person cannot see into: empty regions of a horizontal slice
+  /// enclosed by the surface (inside a dress; between an arm and the torso where they touch).
+  bool fillEnclosed = true;
   unsigned seed = 1;
 };
 

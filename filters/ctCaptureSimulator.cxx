@@ -61,6 +61,7 @@ int ctCaptureSimulator::RequestData(vtkInformation*, vtkInformationVector** inpu
     options.holeRadius = this->HoleRadius;
     options.noise = this->NoiseLevel;
     options.seed = static_cast<unsigned>(this->Seed);
+    options.fillEnclosed = this->FillEnclosed;
     if (vtkDataArray* frame = input->GetFieldData()->GetArray("FrameIndex"))
       options.seed += static_cast<unsigned>(frame->GetTuple1(0));
     clothtrack::SourceMap map;

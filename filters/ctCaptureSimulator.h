@@ -34,6 +34,11 @@ public:
   vtkGetMacro(HoleRadius, double);
   vtkSetClampMacro(NoiseLevel, double, 0.0, 1.0);
   vtkGetMacro(NoiseLevel, double);
+  /// Fill regions that cameras around the person cannot see into (inside a dress, a gap closed
+  /// by an arm against the torso), as a visual hull does. On by default.
+  vtkSetMacro(FillEnclosed, bool);
+  vtkGetMacro(FillEnclosed, bool);
+  vtkBooleanMacro(FillEnclosed, bool);
   vtkSetMacro(Seed, int);
   vtkGetMacro(Seed, int);
 
@@ -50,6 +55,7 @@ protected:
   double HoleRadius = 0.03;
   double NoiseLevel = 0.0;
   int Seed = 1;
+  bool FillEnclosed = true;
 
 private:
   ctCaptureSimulator(const ctCaptureSimulator&) = delete;

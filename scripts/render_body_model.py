@@ -3,24 +3,19 @@
 
 usage: PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 scripts/render_body_model.py OUT.png
 """
-import math
 import random
 import sys
 
 import clothtrack
+from clothtrack.rendering import offscreen_window, save_png
 from vtkmodules.vtkFiltersSources import vtkArrowSource, vtkSphereSource
 from vtkmodules.vtkFiltersCore import vtkGlyph3D, vtkPolyDataNormals
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
-                                         vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
 
 out = sys.argv[1] if len(sys.argv) > 1 else "body_model.png"
 rng = random.Random(4)
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetSize(1500, 560)
+window = offscreen_window(1500, 560)
 renderer = vtkRenderer()
 renderer.SetBackground(1, 1, 1)
 window.AddRenderer(renderer)
@@ -70,11 +65,5 @@ camera.SetPosition(2.0 + 1.2, 1.3, 6.5)
 camera.SetViewUp(0, 1, 0)
 renderer.ResetCamera()
 camera.Zoom(1.9)
-window.Render()
-grab = vtkWindowToImageFilter()
-grab.SetInput(window)
-writer = vtkPNGWriter()
-writer.SetFileName(out)
-writer.SetInputConnection(grab.GetOutputPort())
-writer.Write()
+save_png(window, out)
 print("wrote", out)

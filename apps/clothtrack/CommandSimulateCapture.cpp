@@ -4,7 +4,8 @@
 #include "Options.h"
 #include "Progress.h"
 
-#include "ctCaptureSimulation.h"
+#include "CaptureOutput.h"
+
 #include "ctMeshConversion.h"
 
 #include <clothtrack/FrameList.h>
@@ -42,7 +43,9 @@ int runSimulateCapture(const Args& args)
       "drop", po::value(&drop)->default_value(0.0),
       "probability that a frame is dropped (missing frames)")(
       "seed", po::value(&seed)->default_value(1),
-      "random seed (runs with the same seed are identical)");
+      "random seed (runs with the same seed are identical)")(
+      "no-hull-fill", po::bool_switch(),
+      "do not fill regions cameras cannot see into (inside a dress, enclosed gaps)");
   addSequenceOptions(options, seq);
   po::positional_options_description positional;
   positional.add("input", 1);
@@ -53,15 +56,11 @@ int runSimulateCapture(const Args& args)
   const FrameConventions conventions = toConventions(seq);
   if (!(capture.voxelSize >= 0.002 && capture.voxelSize <= 0.2))
     throw UsageError{"--voxel must be between 0.002 and 0.2 metres"};
+  capture.fillEnclosed = !values["no-hull-fill"].as<bool>();
   if (!(drop >= 0 && drop < 1)) throw UsageError{"--drop must be in [0, 1)"};
 
   const std::vector<std::string> frames = listFrames(input);
-  for (const char* sub : {"frames", "source_map"})
-  {
-    std::error_code ec;
-    fs::create_directories(fs::path(output) / sub, ec);
-    if (ec) throw UsageError{output + ": cannot create folder (" + ec.message() + ")"};
-  }
+  makeOutputFolders(output);
   std::mt19937 dropRng(static_cast<unsigned>(seed));
   std::uniform_real_distribution<double> uniform(0, 1);
   Progress progress("simulate-capture", static_cast<int>(frames.size()));
@@ -71,19 +70,8 @@ int runSimulateCapture(const Args& args)
     const bool dropped = uniform(dropRng) < drop;
     if (!dropped)
     {
-      const TriangleMesh truth = loadFrame(frames[k], conventions);
-      capture.seed = static_cast<unsigned>(seed) * 1000003u + static_cast<unsigned>(k);
-      SourceMap map;
-      const TriangleMesh captured = simulateCapture(truth, capture, &map);
-      char name[32];
-      std::snprintf(name, sizeof(name), "frame_%04zu", k);
-      const fs::path frameFile = fs::path(output) / "frames" / (std::string(name) + ".obj");
-      writeOBJ(frameFile.string() + ".part", captured);
-      fs::rename(frameFile.string() + ".part", frameFile);
-      vtkSmartPointer<vtkPolyData> withMap = toPolyData(captured);
-      addSourceMapArrays(map, withMap);
-      writeMeshFile((fs::path(output) / "source_map" / (std::string(name) + ".vtp")).string(),
-                    withMap);
+      captureAndWrite(output, static_cast<long>(k), loadFrame(frames[k], conventions), capture,
+                      static_cast<unsigned>(seed));
       ++written;
     }
     progress.step(static_cast<int>(k + 1));

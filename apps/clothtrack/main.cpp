@@ -33,6 +33,9 @@ const std::map<std::string, Command>& commands()
       {"simulate-capture",
        {clothtrack::app::runSimulateCapture,
         "re-mesh a ground-truth sequence as a multi-view capture would, with the source map"}},
+      {"synth",
+       {clothtrack::app::runSynth,
+        "generate a synthetic clothed capture with ground truth (body, garment, motion)"}},
   };
   return table;
 }

@@ -66,3 +66,17 @@ if (NOT EXISTS ${WORK}/capture/frames/frame_0000.obj OR NOT EXISTS ${WORK}/captu
 endif ()
 expect_run(1 "--voxel must be between" simulate-capture ${WORK}/body.obj -o ${WORK}/capture --voxel 5)
 expect_run(1 "no such file or folder" simulate-capture ${WORK}/none -o ${WORK}/capture)
+
+# synth: a short dress-walk with every output.
+expect_run(0 "wrote 3 frames of 'dress-walk'" synth --preset dress-walk --frames 3 --seed 7 -o ${WORK}/synth)
+foreach (f frames/frame_0002.obj ground_truth/frame_0002.obj source_map/frame_0002.vtp body.json markers.csv)
+  if (NOT EXISTS ${WORK}/synth/${f})
+    message(FATAL_ERROR "synth did not write ${f}")
+  endif ()
+endforeach ()
+file(STRINGS ${WORK}/synth/markers.csv marker_lines)
+list(LENGTH marker_lines marker_count)
+if (NOT marker_count EQUAL 43) # header + 3 frames x 14 markers
+  message(FATAL_ERROR "markers.csv has ${marker_count} lines, expected 43")
+endif ()
+expect_run(1 "unknown preset 'kilt-jog'" synth --preset kilt-jog -o ${WORK}/synth2)

@@ -25,12 +25,12 @@ void BodyModel::shape(const Eigen::VectorXd& beta, Points& vertices, Points& joi
   jointPositions = Eigen::Map<const Points>(j.data(), NumJoints, 3);
 }
 
-Points BodyModel::pose(const Points& vertices, const Points& jointPositions, const BodyPose& pose,
-                       std::vector<Eigen::Matrix4d>* jointTransforms) const
+std::vector<Eigen::Matrix4d> jointWorldTransforms(const Points& jointPositions,
+                                                  const BodyPose& pose)
 {
-  // World transform of each joint: parent transform times the local rotation about the joint.
+  // Each joint: its parent's transform times its local rotation about the joint.
   const auto& parents = jointParents();
-  std::vector<Eigen::Matrix4d> world(NumJoints), skinning(NumJoints);
+  std::vector<Eigen::Matrix4d> world(NumJoints);
   for (int j = 0; j < NumJoints; ++j)
   {
     Eigen::Matrix4d local = Eigen::Matrix4d::Identity();
@@ -40,18 +40,38 @@ Points BodyModel::pose(const Points& vertices, const Points& jointPositions, con
     local.topRightCorner<3, 1>() =
         p < 0 ? Vec3(joint + pose.translation) : Vec3(joint - jointPositions.row(p).transpose());
     world[j] = p < 0 ? local : Eigen::Matrix4d(world[p] * local);
-    Eigen::Matrix4d toJoint = Eigen::Matrix4d::Identity();
-    toJoint.topRightCorner<3, 1>() = -joint;
-    skinning[j] = world[j] * toJoint;
   }
-  Points out(vertices.rows(), 3);
-  for (Eigen::Index i = 0; i < vertices.rows(); ++i)
+  return world;
+}
+
+Points skinPoints(const Points& points, const Eigen::MatrixXd& weights,
+                  const Points& jointPositions, const std::vector<Eigen::Matrix4d>& world)
+{
+  std::vector<Eigen::Matrix<double, 3, 4>> skinning(NumJoints);
+  for (int j = 0; j < NumJoints; ++j)
+  {
+    Eigen::Matrix4d toJoint = Eigen::Matrix4d::Identity();
+    toJoint.topRightCorner<3, 1>() = -jointPositions.row(j).transpose();
+    skinning[j] = (world[j] * toJoint).topRows<3>();
+  }
+  Points out(points.rows(), 3);
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
   {
     Eigen::Matrix<double, 3, 4> blended = Eigen::Matrix<double, 3, 4>::Zero();
     for (int j = 0; j < NumJoints; ++j)
-      if (weights(i, j) != 0.0) blended += weights(i, j) * skinning[j].topRows<3>();
-    out.row(i) = (blended.leftCols<3>() * vertices.row(i).transpose() + blended.col(3)).transpose();
+      if (weights(i, j) != 0.0) blended += weights(i, j) * skinning[j];
+    out.row(i) = (blended.leftCols<3>() * points.row(i).transpose() + blended.col(3)).transpose();
   }
+  return out;
+}
+
+Points BodyModel::pose(const Points& vertices, const Points& jointPositions,
+                       const BodyPose& bodyPose,
+                       std::vector<Eigen::Matrix4d>* jointTransforms) const
+{
+  const std::vector<Eigen::Matrix4d> world = jointWorldTransforms(jointPositions, bodyPose);
+  Points out =
+      vertices.rows() > 0 ? skinPoints(vertices, weights, jointPositions, world) : Points(0, 3);
   if (jointTransforms) *jointTransforms = world;
   return out;
 }

@@ -61,6 +61,15 @@ struct BodyModel
   int landmarkIndex(const std::string& name) const;
 };
 
+/// World transform of every joint for `pose` (joints given in rest pose).
+std::vector<Eigen::Matrix4d> jointWorldTransforms(const Points& jointPositions,
+                                                  const BodyPose& pose);
+
+/// Linear blend skinning of rest-pose points with per-point weights (rows x NumJoints).
+Points skinPoints(const Points& points, const Eigen::MatrixXd& weights,
+                  const Points& jointPositions,
+                  const std::vector<Eigen::Matrix4d>& worldTransforms);
+
 /// Rodrigues: rotation matrix of an axis-angle vector.
 Eigen::Matrix3d axisAngleToMatrix(const Vec3& axisAngle);
 } // namespace clothtrack

@@ -1,0 +1,113 @@
+#include "ctSyntheticSequence.h"
+
+#include <clothtrack/Error.h>
+#include <clothtrack/Primitives.h>
+#include <clothtrack/body/Motion.h>
+#include <clothtrack/synth/ClothSimulator.h>
+
+#include <random>
+
+namespace clothtrack
+{
+namespace
+{
+struct Preset
+{
+  const char* name;
+  GarmentType garment;
+  MotionType motion;
+  double hemHeight;
+  double flare;
+};
+
+const std::vector<Preset>& presets()
+{
+  static const std::vector<Preset> all = {
+      {"dress-walk", GarmentType::Dress, MotionType::Walk, 0.30, 1.9},
+      {"skirt-turn", GarmentType::Skirt, MotionType::Turn, 0.36, 2.3},
+      {"trousers-squat", GarmentType::Trousers, MotionType::Squat, 0.0, 1.0},
+      {"shirt-armraise", GarmentType::Shirt, MotionType::ArmRaise, 0.0, 1.0},
+      {"dress-samba", GarmentType::Dress, MotionType::Dance, 0.22, 2.0},
+  };
+  return all;
+}
+} // namespace
+
+const std::vector<std::string>& syntheticPresets()
+{
+  static const std::vector<std::string> names = []
+  {
+    std::vector<std::string> n;
+    for (const auto& p : presets()) n.push_back(p.name);
+    return n;
+  }();
+  return names;
+}
+
+const std::vector<std::string>& syntheticMarkerNames()
+{
+  static const std::vector<std::string> names = {
+      "forehead",   "left_shoulder", "right_shoulder", "left_elbow", "right_elbow",
+      "left_wrist", "right_wrist",   "belly",          "left_knee",  "right_knee",
+      "left_toe",   "right_toe",     "left_heel",      "right_heel"};
+  return names;
+}
+
+Eigen::VectorXd generateSyntheticSequence(const BodyModel& model, const SyntheticOptions& options,
+                                          const std::function<void(const SyntheticFrame&)>& sink)
+{
+  const Preset* preset = nullptr;
+  for (const auto& p : presets())
+    if (options.preset == p.name) preset = &p;
+  if (!preset)
+  {
+    std::string all;
+    for (const auto& n : syntheticPresets()) all += (all.empty() ? "" : ", ") + n;
+    throw Error("unknown preset '" + options.preset + "' (one of: " + all + ")");
+  }
+  if (options.frames < 1 || options.frames > 100000)
+    throw Error("the number of frames must be between 1 and 100000");
+  if (!(options.fps > 0)) throw Error("the frame rate must be positive");
+
+  std::mt19937 rng(options.seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Eigen::VectorXd beta = Eigen::VectorXd::Zero(model.numShapeComponents());
+  for (int k = 0; k < std::min(6, static_cast<int>(beta.size())); ++k)
+    beta[k] = std::clamp(options.shapeSpread * normal(rng), -2.0, 2.0);
+
+  GarmentOptions garmentOptions;
+  garmentOptions.type = preset->garment;
+  garmentOptions.hemHeight = options.hemHeight > 0 ? options.hemHeight : preset->hemHeight;
+  garmentOptions.flare = preset->flare;
+  ClothSimulator cloth(model, beta, makeGarment(model, beta, garmentOptions));
+
+  std::vector<int> markerVertices;
+  for (const auto& name : syntheticMarkerNames())
+  {
+    const int index = model.landmarkIndex(name);
+    if (index < 0) throw Error("the body model has no landmark '" + name + "' for the markers");
+    markerVertices.push_back(model.landmarks[index].vertex);
+  }
+
+  for (int k = 0; k < options.frames; ++k)
+  {
+    SyntheticFrame frame;
+    frame.index = k;
+    frame.time = k / options.fps;
+    frame.pose = model.grounded(beta, motionPose(preset->motion, frame.time));
+    frame.body = model.posed(beta, frame.pose);
+    if (k == 0)
+      cloth.reset(frame.pose);
+    else
+      cloth.step(frame.pose, 1.0 / options.fps);
+    const TriangleMesh garment{cloth.positions(), cloth.garment().rest.F};
+    frame.clothed = concatenate(frame.body, garment);
+    frame.garmentOffset = frame.body.numVertices();
+    frame.markers.resize(static_cast<Eigen::Index>(markerVertices.size()), 3);
+    for (size_t m = 0; m < markerVertices.size(); ++m)
+      frame.markers.row(static_cast<Eigen::Index>(m)) = frame.body.V.row(markerVertices[m]);
+    sink(frame);
+  }
+  return beta;
+}
+} // namespace clothtrack
