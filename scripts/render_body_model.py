@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Render the built-in body model for a few shapes and a pose, with its oriented landmarks.
 
-usage: PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 scripts/render_body_model.py OUT.png
+usage: PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 scripts/render_body_model.py OUT.png [MODEL.vtp]
+
+Without MODEL.vtp the built-in model is drawn.
 """
 import random
 import sys
@@ -14,6 +16,7 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
 
 out = sys.argv[1] if len(sys.argv) > 1 else "body_model.png"
+model_file = sys.argv[2] if len(sys.argv) > 2 else ""
 rng = random.Random(4)
 window = offscreen_window(1500, 560)
 renderer = vtkRenderer()
@@ -23,6 +26,7 @@ window.AddRenderer(renderer)
 shapes = [[0.0] * 10] + [[rng.gauss(0, 1) for _ in range(10)] for _ in range(3)] + [[0.0] * 10]
 for index, beta in enumerate(shapes):
     body = clothtrack.ctBodyModelSource()
+    body.SetModelFileName(model_file)
     for k, b in enumerate(beta):
         body.SetShapeCoefficient(k, b)
     body.SetTranslation(1.0 * index, 0, 0)

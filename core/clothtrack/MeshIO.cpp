@@ -84,7 +84,7 @@ TriangleMesh toMesh(const std::vector<double>& coords, const std::vector<int>& f
 }
 } // namespace
 
-TriangleMesh readOBJ(const std::string& path)
+TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
 {
   const std::string text = readWholeFile(path);
   if (text.empty()) throw Error(path + ": empty file");
@@ -98,6 +98,7 @@ TriangleMesh readOBJ(const std::string& path)
   std::vector<long> rawFaces;
   std::vector<int> faceLine, faceSize, faceVertexCount;
   int lineNo = 0;
+  bool inGroup = onlyGroup.empty();
   const char* p = text.data();
   const char* end = p + text.size();
   while (p < end)
@@ -117,7 +118,9 @@ TriangleMesh readOBJ(const std::string& path)
                     "malformed vertex record (expected 'v x y z'; truncated file?)");
       coords.insert(coords.end(), xyz, xyz + 3);
     }
-    else if (tokens[0] == "f")
+    else if (tokens[0] == "g" && !onlyGroup.empty())
+      inGroup = tokens.size() > 1 && tokens[1] == onlyGroup;
+    else if (tokens[0] == "f" && inGroup)
     {
       if (tokens.size() < 4)
         throw Error(where(path, lineNo) + "face with fewer than 3 vertices (truncated file?)");

@@ -8,8 +8,9 @@
 namespace clothtrack
 {
 /// Wavefront OBJ: `v` and `f` records (indices may be negative, `v/vt/vn` forms accepted);
-/// polygons are triangulated as fans. Other records are ignored.
-TriangleMesh readOBJ(const std::string& path);
+/// polygons are triangulated as fans. Other records are ignored. With `onlyGroup`, only the faces
+/// of that `g` group are kept (all vertices are, so that indices keep their meaning).
+TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup = {});
 /// Object File Format (OFF); polygons are triangulated as fans.
 TriangleMesh readOFF(const std::string& path);
 /// Stanford PLY, ASCII or binary (either endianness): vertex x, y, z and the face

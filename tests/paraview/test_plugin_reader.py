@@ -54,6 +54,13 @@ mesh = servermanager.Fetch(body)
 check(5000 <= mesh.GetNumberOfPoints() <= 15000, "body model vertices %d" % mesh.GetNumberOfPoints())
 check(mesh.GetPointData().GetArray("SkinWeights").GetNumberOfComponents() == 22, "skin weights")
 
+synthetic = ClothTrackSyntheticCapture(Preset="skirt-turn", NumberOfFrames=3)
+synthetic.UpdatePipelineInformation()
+check(len(synthetic.TimestepValues) == 3, "synthetic time steps")
+synthetic.UpdatePipeline(synthetic.TimestepValues[2])
+truth = servermanager.Fetch(synthetic)
+check(truth.GetPointData().GetArray("IsGarment") is not None, "synthetic ground truth arrays")
+
 if shared and os.path.isdir(os.path.join(shared, "vlasic-samba")):
     samba = ClothTrackSequenceReader(FileName=os.path.join(shared, "vlasic-samba"))
     samba.UpdatePipelineInformation()

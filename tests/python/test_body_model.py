@@ -42,6 +42,33 @@ class BodyModelTest(unittest.TestCase):
         for expected in ("forehead", "left_wrist", "right_heel", "belly"):
             self.assertIn(expected, all_names)
 
+    def test_model_file_round_trip_through_the_reader(self):
+        import os
+        import tempfile
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "model.vtp")
+            app = os.environ.get("CLOTHTRACK_APP")
+            # The reader checks the file: an ordinary mesh is refused.
+            plain = os.path.join(folder, "plain.vtp")
+            body = clothtrack.ctBodyModelSource()  # must outlive the connection
+            writer = vtkXMLPolyDataWriter()
+            writer.SetInputConnection(body.GetOutputPort(0))
+            writer.SetFileName(plain)
+            writer.Write()
+            reader = clothtrack.ctBodyModelReader()
+            reader.SetFileName(plain)
+            reader.Update()
+            self.assertEqual(reader.GetOutput().GetNumberOfPoints(), 0)
+            if app:
+                import subprocess
+                subprocess.run([app, "body-model", "-o", path], check=True, capture_output=True)
+                reader.SetFileName(path)
+                reader.Update()
+                self.assertGreater(reader.GetOutput().GetNumberOfPoints(), 5000)
+                self.assertGreaterEqual(reader.GetNumberOfShapeComponents(), 10)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -330,6 +330,34 @@ std::vector<OrientedLandmark> findLandmarks(const TriangleMesh& mesh, const Skel
   return out;
 }
 
+void learnShapeSpace(Eigen::MatrixXd X, const Triangles& faces, int numComponents, BodyModel& model)
+{
+  const int N = static_cast<int>(X.rows());
+  const int n = static_cast<int>((X.cols() - 3 * NumJoints) / 3);
+  if (N < 2 || n <= 0) throw Error("shape space: need at least two bodies with vertices");
+  const Eigen::RowVectorXd mean = X.colwise().mean();
+  X.rowwise() -= mean;
+  // PCA through the N x N Gram matrix (N << dimensions).
+  const Eigen::MatrixXd gram = X * X.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
+  const Eigen::VectorXd lambda = eig.eigenvalues().reverse();
+  const Eigen::MatrixXd vecs = eig.eigenvectors().rowwise().reverse();
+  const int K = std::min(numComponents, N - 1);
+  Eigen::MatrixXd basis(X.cols(), K);
+  for (int k = 0; k < K; ++k)
+  {
+    const double l = std::max(lambda[k], 0.0);
+    const Eigen::VectorXd direction = X.transpose() * vecs.col(k) / std::sqrt(std::max(l, 1e-300));
+    basis.col(k) = direction * std::sqrt(l / (N - 1)); // one standard deviation
+  }
+  model.explainedVariance = lambda.head(K) / std::max(lambda.sum(), 1e-300);
+  model.mesh.F = faces;
+  model.mesh.V = Eigen::Map<const Points>(mean.data(), n, 3);
+  model.joints = Eigen::Map<const Points>(mean.data() + 3 * n, NumJoints, 3);
+  model.vertexBasis = basis.topRows(3 * n);
+  model.jointBasis = basis.bottomRows(3 * NumJoints);
+}
+
 BodyModel buildBodyModel(const TriangleMesh& templateMesh, const SkeletonGeometry& skeleton,
                          double stature, const BodyModelBuildOptions& options)
 {
@@ -349,29 +377,7 @@ BodyModel buildBodyModel(const TriangleMesh& templateMesh, const SkeletonGeometr
     X.row(k).head(3 * n) = Eigen::Map<const Eigen::RowVectorXd>(v.data(), 3 * n);
     X.row(k).tail(3 * NumJoints) = Eigen::Map<const Eigen::RowVectorXd>(j.data(), 3 * NumJoints);
   }
-  const Eigen::RowVectorXd mean = X.colwise().mean();
-  X.rowwise() -= mean;
-
-  // PCA through the N x N Gram matrix (N << dims).
-  const Eigen::MatrixXd gram = X * X.transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
-  const Eigen::VectorXd lambda = eig.eigenvalues().reverse();
-  const Eigen::MatrixXd vecs = eig.eigenvectors().rowwise().reverse();
-  const int K = std::min(options.numComponents, N - 1);
-  Eigen::MatrixXd basis(dims, K);
-  for (int k = 0; k < K; ++k)
-  {
-    const double l = std::max(lambda[k], 0.0);
-    const Eigen::VectorXd direction = X.transpose() * vecs.col(k) / std::sqrt(std::max(l, 1e-300));
-    basis.col(k) = direction * std::sqrt(l / (N - 1)); // one standard deviation
-  }
-  model.explainedVariance = lambda.head(K) / lambda.sum();
-
-  model.mesh.F = templateMesh.F;
-  model.mesh.V = Eigen::Map<const Points>(mean.data(), n, 3);
-  model.joints = Eigen::Map<const Points>(mean.data() + 3 * n, NumJoints, 3);
-  model.vertexBasis = basis.topRows(3 * n);
-  model.jointBasis = basis.bottomRows(3 * NumJoints);
+  learnShapeSpace(std::move(X), templateMesh.F, options.numComponents, model);
 
   // Landmarks are found on the template's own skeleton, then carried by vertex index.
   model.landmarks = findLandmarks(templateMesh, skeleton, stature);

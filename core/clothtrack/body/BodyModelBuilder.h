@@ -35,6 +35,12 @@ void deformTemplate(const TriangleMesh& mesh, const SkeletonGeometry& skeleton,
 std::vector<OrientedLandmark> findLandmarks(const TriangleMesh& mesh,
                                             const SkeletonGeometry& skeleton, double stature);
 
+/// PCA of a population (one body per row: 3n vertex then 3J joint coordinates). Fills the
+/// model's mean mesh vertices, joints, bases (one standard deviation per component) and
+/// explained variance; `faces` become the mesh's faces.
+void learnShapeSpace(Eigen::MatrixXd population, const Triangles& faces, int numComponents,
+                     BodyModel& model);
+
 BodyModel buildBodyModel(const TriangleMesh& templateMesh, const SkeletonGeometry& skeleton,
                          double stature, const BodyModelBuildOptions& options = {});
 } // namespace clothtrack
