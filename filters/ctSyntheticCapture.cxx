@@ -3,6 +3,7 @@
 #include "ctBuiltinBodyModel.h"
 #include "ctCaptureSimulation.h"
 #include "ctMeshConversion.h"
+#include "ctRequestedPortOnly.h"
 #include "ctSyntheticSequence.h"
 
 #include <clothtrack/Error.h>
@@ -49,18 +50,7 @@ vtkTypeBool ctSyntheticCapture::ProcessRequest(vtkInformation* request,
                                                vtkInformationVector* outputVector)
 {
   // Produce only the requested port: a capture is not simulated when only the truth is shown.
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
-  {
-    if (request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT()))
-    {
-      const int requested = request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT());
-      for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
-        if (port != requested && requested >= 0)
-          outputVector->GetInformationObject(port)->Set(
-              vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
-    }
-    return 1;
-  }
+  if (clothtrack::handleRequestedPortOnly(request, outputVector)) return 1;
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
@@ -111,9 +101,7 @@ int ctSyntheticCapture::RequestData(vtkInformation* request, vtkInformationVecto
       in.Key = key;
     }
 
-    const int port = request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-                         ? std::max(0, request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT()))
-                         : 0;
+    const int port = clothtrack::requestedPort(request);
     vtkInformation* outInfo = outputVector->GetInformationObject(port);
     int index = 0;
     if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))

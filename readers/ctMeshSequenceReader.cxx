@@ -1,6 +1,7 @@
 #include "ctMeshSequenceReader.h"
 
 #include "ctMeshConversion.h"
+#include "ctRequestedPortOnly.h"
 
 #include <clothtrack/Error.h>
 #include <clothtrack/FrameList.h>
@@ -53,18 +54,7 @@ vtkTypeBool ctMeshSequenceReader::ProcessRequest(vtkInformation* request,
 {
   // Only the requested port is produced, so that playing frames never loads the whole
   // sequence; the other port is left as it is and stays out of date.
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
-  {
-    const int requested = request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-                              ? request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-                              : -1;
-    if (requested >= 0)
-      for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
-        if (port != requested)
-          outputVector->GetInformationObject(port)->Set(
-              vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
-    return 1;
-  }
+  if (clothtrack::handleRequestedPortOnly(request, outputVector)) return 1;
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
@@ -174,9 +164,7 @@ int ctMeshSequenceReader::RequestData(vtkInformation* request, vtkInformationVec
     vtkErrorMacro(<< (in.ListError.empty() ? this->FileName + ": no frame" : in.ListError));
     return 0;
   }
-  const int port = request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-                       ? request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-                       : 0;
+  const int port = clothtrack::requestedPort(request);
   if (port == 1)
   {
     auto* output = vtkMultiBlockDataSet::GetData(outputVector, 1);
