@@ -14,6 +14,7 @@ int runBodyModel(const Args& args);
 int runSimulateCapture(const Args& args);
 int runSynth(const Args& args);
 int runImportMakeHuman(const Args& args);
+int runSelectTemplate(const Args& args);
 
 /// Raised for a user error (bad option, bad path); main prints the message as one line.
 struct UsageError

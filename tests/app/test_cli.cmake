@@ -80,3 +80,8 @@ if (NOT marker_count EQUAL 43) # header + 3 frames x 14 markers
   message(FATAL_ERROR "markers.csv has ${marker_count} lines, expected 43")
 endif ()
 expect_run(1 "unknown preset 'kilt-jog'" synth --preset kilt-jog -o ${WORK}/synth2)
+
+# select-template on the synthetic capture: a table and a chosen frame.
+expect_run(0 "template frame:" select-template ${WORK}/synth/frames --persistence 1 --csv ${WORK}/criteria.csv)
+expect_run(0 "template frame: 1 (frame_0001.obj), set by --template" select-template ${WORK}/synth/frames --template 1)
+expect_run(1 "--template 7 is out of range" select-template ${WORK}/synth/frames --template 7)

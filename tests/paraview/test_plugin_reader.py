@@ -47,6 +47,12 @@ geodesic.UpdatePipeline(0.0)
 distances = servermanager.Fetch(geodesic).GetPointData().GetArray("GeodesicDistance")
 check(abs(distances.GetValue(1) - 1.0) < 1e-9, "geodesic distance to vertex 1: %g" % distances.GetValue(1))
 
+selection = ClothTrackTemplateSelection(Input=OutputPort(reader, 1))
+selection.Persistence = 1
+selection.UpdatePipeline()
+template = servermanager.Fetch(selection)
+check(template.GetFieldData().GetArray("TemplateFrame").GetValue(0) in range(6), "template frame")
+
 body = ClothTrackBodyModel()
 body.ShapeCoefficients = [1.0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
 body.UpdatePipeline()

@@ -1,10 +1,18 @@
 // The capture simulator: re-meshing, topological noise where limbs touch, the source map.
 #include "ctBuiltinBodyModel.h"
 #include "ctCaptureSimulation.h"
+#include "ctMeshConversion.h"
+#include "ctTemplateSelection.h"
 
 #include <clothtrack/Components.h>
 #include <clothtrack/Error.h>
 #include <clothtrack/body/Motion.h>
+
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkTable.h>
+#include <vtkVariant.h>
 
 #include <gtest/gtest.h>
 
@@ -90,4 +98,47 @@ TEST(CaptureSimulation, HolesNoiseAndDeterminism)
   EXPECT_NE(simulateCapture(body, options).V.rows(), 0);
   options.voxelSize = 0;
   EXPECT_THROW(simulateCapture(body, options), Error);
+}
+
+TEST(TemplateSelectionFilter, PicksAFrameWhereTheArmsAreFree)
+{
+  const BodyModel& model = builtinBodyModel();
+  const Eigen::VectorXd beta = Eigen::VectorXd::Zero(2);
+  vtkNew<vtkMultiBlockDataSet> sequence;
+  const std::vector<double> times = {0.0, 0.1, 0.2, 1.2, 1.5, 1.8};
+  sequence->SetNumberOfBlocks(static_cast<unsigned>(times.size()));
+  CaptureOptions options;
+  options.voxelSize = 0.02;
+  std::vector<int> genus;
+  for (size_t k = 0; k < times.size(); ++k)
+  {
+    const TriangleMesh body =
+        model.posed(beta, model.grounded(beta, motionPose(MotionType::ArmRaise, times[k])));
+    const TriangleMesh captured = simulateCapture(body, options);
+    genus.push_back(connectedComponents(captured, buildTopology(captured)).info[0].genus());
+    sequence->SetBlock(static_cast<unsigned>(k), toPolyData(captured));
+  }
+  vtkNew<ctTemplateSelection> selection;
+  selection->SetInputData(sequence);
+  selection->SetPersistence(2);
+  selection->Update();
+  const int chosen = selection->GetChosenFrame();
+  ASSERT_GE(chosen, 0);
+  EXPECT_EQ(genus[chosen], *std::min_element(genus.begin(), genus.end()));
+  EXPECT_GE(chosen, 3); // arms raised, not hanging against the body
+  vtkTable* table = selection->GetCriteriaOutput();
+  ASSERT_EQ(table->GetNumberOfRows(), 6);
+  EXPECT_EQ(table->GetValueByName(chosen, "Chosen").ToInt(), 1);
+  EXPECT_EQ(selection->GetOutput()->GetNumberOfPoints(),
+            vtkPolyData::SafeDownCast(sequence->GetBlock(static_cast<unsigned>(chosen)))
+                ->GetNumberOfPoints());
+  // The override wins; an index out of range is an error.
+  selection->SetTemplateFrame(1);
+  selection->Update();
+  EXPECT_EQ(selection->GetChosenFrame(), 1);
+  selection->SetTemplateFrame(99);
+  selection->GlobalWarningDisplayOff();
+  selection->Update();
+  selection->GlobalWarningDisplayOn();
+  EXPECT_EQ(selection->GetOutput()->GetNumberOfPoints(), 0);
 }

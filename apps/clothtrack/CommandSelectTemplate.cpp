@@ -1,0 +1,123 @@
+// clothtrack select-template: the template frame of a sequence and every frame's criteria
+// (also the per-frame topology report of 'clothtrack inspect').
+#include "Commands.h"
+#include "Options.h"
+#include "Progress.h"
+
+#include "ctMeshConversion.h"
+
+#include <clothtrack/FrameList.h>
+#include <clothtrack/TemplateSelection.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace clothtrack::app
+{
+namespace
+{
+int runFrameTable(const Args& args, bool choose)
+{
+  std::string input, csvPath;
+  SequenceOptions seq;
+  TemplateSelectionOptions selection;
+  int forced = -1;
+  const char* name = choose ? "select-template" : "inspect";
+  po::options_description options(std::string(name) + " options");
+  options.add_options()("input", po::value(&input)->required(),
+                        "folder, glob pattern, list file or mesh file")(
+      "min-shell-area", po::value(&selection.minimumShellArea)->default_value(0.1),
+      "components smaller than this (m^2) are not counted as body parts")(
+      "csv", po::value(&csvPath), "also write the table as CSV to this file");
+  if (choose)
+    options.add_options()("persistence", po::value(&selection.persistence)->default_value(3),
+                          "a split counts only if it lasts this many consecutive frames")(
+        "template", po::value(&forced)->default_value(-1),
+        "use this frame (-1: choose automatically)");
+  addSequenceOptions(options, seq);
+  po::positional_options_description positional;
+  positional.add("input", 1);
+  po::variables_map values;
+  if (!parseOptions(args, std::string("clothtrack ") + name + " INPUT [options]", options,
+                    positional, values))
+    return 0;
+  const FrameConventions conventions = toConventions(seq);
+  if (selection.persistence < 1) throw UsageError{"--persistence must be at least 1"};
+
+  const std::vector<std::string> frames = listFrames(input);
+  if (forced >= static_cast<int>(frames.size()))
+    throw UsageError{"--template " + std::to_string(forced) +
+                     " is out of range: " + std::to_string(frames.size()) + " frames"};
+  std::vector<FrameTopology> criteria;
+  std::vector<int> vertices, faces;
+  Progress progress(name, static_cast<int>(frames.size()));
+  for (size_t k = 0; k < frames.size(); ++k)
+  {
+    std::vector<std::string> warnings;
+    const TriangleMesh mesh = loadFrame(frames[k], conventions, &warnings);
+    for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    criteria.push_back(frameTopology(mesh, selection.minimumShellArea));
+    vertices.push_back(mesh.numVertices());
+    faces.push_back(mesh.numFaces());
+    progress.step(static_cast<int>(k + 1));
+  }
+  progress.finish();
+  TemplateSelection chosen;
+  if (choose)
+  {
+    chosen = selectTemplate(criteria, selection);
+    if (forced >= 0) chosen.chosen = forced;
+  }
+
+  std::FILE* csv = nullptr;
+  if (!csvPath.empty() && !(csv = std::fopen(csvPath.c_str(), "w")))
+    throw UsageError{csvPath + ": cannot write file"};
+  if (csv)
+    std::fprintf(csv,
+                 "frame,file,vertices,faces,components,shells,genus_largest,boundaries_largest,"
+                 "area_largest_m2,"
+                 "area_ratio,non_manifold_edges%s\n",
+                 choose ? ",persistent_shells,candidate,chosen" : "");
+  std::printf("%5s %-24s %8s %8s %5s %6s %5s %5s %8s %10s %4s%s\n", "frame", "file", "verts",
+              "faces", "comp", "shells", "genus", "holes", "area", "area_ratio", "nme",
+              choose ? "  persist cand" : "");
+  for (size_t k = 0; k < frames.size(); ++k)
+  {
+    const FrameTopology& t = criteria[k];
+    const std::string file = std::filesystem::path(frames[k]).filename().string();
+    std::printf("%5zu %-24.24s %8d %8d %5d %6d %5d %5d %8.4f %10.1f %4d", k, file.c_str(),
+                vertices[k], faces[k], t.components, t.shells, t.genus, t.boundaries, t.area,
+                t.areaRatio, t.nonManifoldEdges);
+    if (choose)
+      std::printf("  %7d %4s%s", chosen.persistentShells[k], chosen.candidate[k] ? "yes" : "",
+                  static_cast<int>(k) == chosen.chosen ? "  <- template" : "");
+    std::printf("\n");
+    if (csv)
+    {
+      std::fprintf(csv, "%zu,%s,%d,%d,%d,%d,%d,%d,%.6f,%.4f,%d", k, file.c_str(), vertices[k],
+                   faces[k], t.components, t.shells, t.genus, t.boundaries, t.area, t.areaRatio,
+                   t.nonManifoldEdges);
+      if (choose)
+        std::fprintf(csv, ",%d,%d,%d", chosen.persistentShells[k], chosen.candidate[k],
+                     static_cast<int>(k) == chosen.chosen);
+      std::fprintf(csv, "\n");
+    }
+  }
+  if (csv && std::fclose(csv) != 0) throw UsageError{csvPath + ": write error"};
+  if (choose)
+    std::printf("template frame: %d (%s)%s\n", chosen.chosen,
+                std::filesystem::path(frames[chosen.chosen]).filename().string().c_str(),
+                forced >= 0 ? ", set by --template" : "");
+  return 0;
+}
+} // namespace
+
+int runInspect(const Args& args)
+{
+  return runFrameTable(args, false);
+}
+int runSelectTemplate(const Args& args)
+{
+  return runFrameTable(args, true);
+}
+} // namespace clothtrack::app

@@ -1,0 +1,71 @@
+#include "TemplateSelection.h"
+
+#include "Components.h"
+#include "Error.h"
+#include "Laplacian.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace clothtrack
+{
+FrameTopology frameTopology(const TriangleMesh& mesh, double minimumShellArea)
+{
+  FrameTopology t;
+  const MeshTopology topology = buildTopology(mesh);
+  const Components c = connectedComponents(mesh, topology);
+  t.nonManifoldEdges = checkManifold(mesh, topology).nonManifoldEdges;
+  t.components = c.count();
+  for (const auto& info : c.info) t.shells += info.area >= minimumShellArea ? 1 : 0;
+  if (c.count() == 0) return t;
+  t.genus = c.info[0].genus();
+  t.area = c.info[0].area;
+  t.boundaries = c.info[0].numBoundaries;
+  const Eigen::VectorXd areas = mixedVoronoiAreas(extractComponent(mesh, c, 0));
+  const double smallest = areas.minCoeff();
+  t.areaRatio =
+      smallest > 0 ? areas.maxCoeff() / smallest : std::numeric_limits<double>::infinity();
+  return t;
+}
+
+TemplateSelection selectTemplate(const std::vector<FrameTopology>& frames,
+                                 const TemplateSelectionOptions& options)
+{
+  const int n = static_cast<int>(frames.size());
+  if (n == 0) throw Error("template selection: no frame");
+  const int k = std::max(1, options.persistence);
+  TemplateSelection s;
+  s.persistentShells.resize(n);
+  // A frame keeps `c` shells if it lies in a run of at least k consecutive frames that all have
+  // at least c shells; otherwise try c - 1.
+  for (int i = 0; i < n; ++i)
+  {
+    int c = frames[i].shells;
+    for (; c > 1; --c)
+    {
+      int begin = i, end = i;
+      while (begin > 0 && frames[begin - 1].shells >= c) --begin;
+      while (end + 1 < n && frames[end + 1].shells >= c) ++end;
+      if (end - begin + 1 >= std::min(k, n)) break;
+    }
+    s.persistentShells[i] = std::max(c, std::min(frames[i].shells, 1));
+  }
+  const int most = *std::max_element(s.persistentShells.begin(), s.persistentShells.end());
+  int lowestGenus = std::numeric_limits<int>::max();
+  for (int i = 0; i < n; ++i)
+    if (s.persistentShells[i] == most) lowestGenus = std::min(lowestGenus, frames[i].genus);
+  s.candidate.assign(n, 0);
+  double bestRatio = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i)
+  {
+    if (s.persistentShells[i] != most || frames[i].genus != lowestGenus) continue;
+    s.candidate[i] = 1;
+    if (s.chosen < 0 || frames[i].areaRatio < bestRatio)
+    {
+      bestRatio = frames[i].areaRatio;
+      s.chosen = i;
+    }
+  }
+  return s;
+}
+} // namespace clothtrack

@@ -1,0 +1,62 @@
+/**
+ * @class ctTemplateSelection
+ * @brief Chooses the template frame of a sequence by topology, then area uniformity.
+ *
+ * Input: the whole sequence as a vtkMultiBlockDataSet of vtkPolyData frames (e.g. port 1 of
+ * ctMeshSequenceReader). Per frame: connected components, shells (components of at least
+ * MinimumShellArea), genus of the largest component and its area ratio (largest / smallest
+ * mixed Voronoi vertex area). Splits count only when they persist for Persistence consecutive
+ * frames. Candidates have the most shells, then the smallest genus; the template is the
+ * candidate with the smallest area ratio. TemplateFrame >= 0 overrides the choice.
+ *
+ * Output port 0: the template mesh (field data TemplateFrame). Output port 1: a vtkTable with
+ * every frame's criteria and the choice.
+ */
+#ifndef ctTemplateSelection_h
+#define ctTemplateSelection_h
+
+#include "ctFiltersModule.h"
+
+#include <vtkPolyDataAlgorithm.h>
+
+class vtkTable;
+
+class CTFILTERS_EXPORT ctTemplateSelection : public vtkPolyDataAlgorithm
+{
+public:
+  static ctTemplateSelection* New();
+  vtkTypeMacro(ctTemplateSelection, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetClampMacro(MinimumShellArea, double, 0.0, 100.0);
+  vtkGetMacro(MinimumShellArea, double);
+  vtkSetClampMacro(Persistence, int, 1, 10000);
+  vtkGetMacro(Persistence, int);
+  /// A frame index to use as template; -1 (default) chooses automatically.
+  vtkSetMacro(TemplateFrame, int);
+  vtkGetMacro(TemplateFrame, int);
+
+  /// The frame chosen by the last update.
+  vtkGetMacro(ChosenFrame, int);
+  vtkTable* GetCriteriaOutput();
+
+protected:
+  ctTemplateSelection();
+  ~ctTemplateSelection() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+                  vtkInformationVector* outputVector) override;
+
+  double MinimumShellArea = 0.1;
+  int Persistence = 3;
+  int TemplateFrame = -1;
+  int ChosenFrame = -1;
+
+private:
+  ctTemplateSelection(const ctTemplateSelection&) = delete;
+  void operator=(const ctTemplateSelection&) = delete;
+};
+
+#endif

@@ -1,0 +1,48 @@
+#include <clothtrack/Error.h>
+#include <clothtrack/Primitives.h>
+#include <clothtrack/TemplateSelection.h>
+
+#include <gtest/gtest.h>
+
+using namespace clothtrack;
+
+namespace
+{
+FrameTopology frame(int shells, int genus, double ratio)
+{
+  FrameTopology t;
+  t.components = t.shells = shells;
+  t.genus = genus;
+  t.areaRatio = ratio;
+  return t;
+}
+} // namespace
+
+TEST(TemplateSelection, PersistentSplitsThenGenusThenAreaRatio)
+{
+  // Frame 2 shows a split for one frame only (noise); frames 5-7 show a lasting split.
+  const std::vector<FrameTopology> frames = {frame(1, 0, 5.0), frame(1, 0, 4.0), frame(2, 0, 1.0),
+                                             frame(1, 0, 3.0), frame(1, 1, 2.0), frame(2, 1, 9.0),
+                                             frame(2, 0, 8.0), frame(2, 0, 7.5)};
+  const TemplateSelection s = selectTemplate(frames, {0.1, 3});
+  EXPECT_EQ(s.persistentShells[2], 1); // the one-frame split does not count
+  EXPECT_EQ(s.persistentShells[6], 2);
+  EXPECT_FALSE(s.candidate[5]); // genus 1 loses against genus 0
+  EXPECT_TRUE(s.candidate[6]);
+  EXPECT_EQ(s.chosen, 7); // lowest area ratio among the candidates
+  // With persistence 1 every split counts: frame 2 wins on area ratio.
+  EXPECT_EQ(selectTemplate(frames, {0.1, 1}).chosen, 2);
+  EXPECT_THROW(selectTemplate({}, {}), Error);
+}
+
+TEST(TemplateSelection, FrameCriteriaFromMeshes)
+{
+  // A torus and a small sphere: one shell above the area threshold, genus 1.
+  const TriangleMesh mesh = concatenate(torus(1.0, 0.3, 40, 16), icosphere(2, 0.1, Vec3(5, 0, 0)));
+  const FrameTopology t = frameTopology(mesh, 0.5);
+  EXPECT_EQ(t.components, 2);
+  EXPECT_EQ(t.shells, 1);
+  EXPECT_EQ(t.genus, 1);
+  EXPECT_GT(t.areaRatio, 1.0);
+  EXPECT_LT(t.areaRatio, 3.0); // a regular torus grid is nearly uniform
+}
