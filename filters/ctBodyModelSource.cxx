@@ -119,6 +119,9 @@ int ctBodyModelSource::RequestData(vtkInformation*, vtkInformationVector**,
     vtkNew<vtkDoubleArray> direction;
     direction->SetName("Direction");
     direction->SetNumberOfComponents(3);
+    vtkNew<vtkDoubleArray> normal;
+    normal->SetName("Normal");
+    normal->SetNumberOfComponents(3);
     vtkNew<vtkIntArray> ids, vertexIds;
     ids->SetName("LandmarkId");
     vertexIds->SetName("VertexId");
@@ -133,6 +136,7 @@ int ctBodyModelSource::RequestData(vtkInformation*, vtkInformationVector**,
       verts->InsertNextCell(1);
       verts->InsertCellPoint(points->InsertNextPoint(p.data()));
       direction->InsertNextTuple(d.data());
+      normal->InsertNextTuple(n.data());
       ids->InsertNextValue(static_cast<int>(k));
       vertexIds->InsertNextValue(l.vertex);
       names->InsertNextValue(l.name);
@@ -142,6 +146,7 @@ int ctBodyModelSource::RequestData(vtkInformation*, vtkInformationVector**,
     landmarks->GetPointData()->AddArray(ids);
     landmarks->GetPointData()->AddArray(vertexIds);
     landmarks->GetPointData()->AddArray(direction);
+    landmarks->GetPointData()->AddArray(normal);
     landmarks->GetPointData()->SetActiveVectors("Direction");
     landmarks->GetPointData()->AddArray(names);
   }

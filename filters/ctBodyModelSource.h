@@ -9,8 +9,8 @@
  *
  * Output port 0: the posed mesh, with point data SkinWeights (one component per joint) and
  * BodyPart (the most influential joint) and field data JointNames and JointPositions (posed).
- * Output port 1: the landmarks as points, with point data LandmarkId, Direction (unit tangent)
- * and VertexId, and the string array LandmarkName.
+ * Output port 1: the landmarks as points, with point data LandmarkId, Direction (unit tangent),
+ * Normal (outward unit normal) and VertexId, and the string array LandmarkName.
  */
 #ifndef ctBodyModelSource_h
 #define ctBodyModelSource_h

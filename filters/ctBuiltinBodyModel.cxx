@@ -75,6 +75,8 @@ TriangleMesh proceduralBodyMesh(double stature, int targetVertices)
   // Keep the one body shell (decimation never splits it, but be certain).
   const Components components = connectedComponents(mesh, buildTopology(mesh));
   if (components.count() > 1) mesh = extractComponent(mesh, components, 0);
+  // Body models face outward: normals point away from the body (landmark transfer relies on it).
+  if (signedVolume(mesh) < 0) mesh.F.col(1).swap(mesh.F.col(2));
   return mesh;
 }
 

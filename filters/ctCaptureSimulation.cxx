@@ -43,11 +43,7 @@ void fillClosed(const TriangleMesh& closed, Grid& grid)
   const SurfaceLocator locator(closed);
   const Points normals = faceNormals(closed);
   // Outward orientation from the sign of the enclosed volume.
-  double volume = 0;
-  for (int f = 0; f < closed.numFaces(); ++f)
-    volume += closed.vertex(closed.F(f, 0))
-                  .dot(closed.vertex(closed.F(f, 1)).cross(closed.vertex(closed.F(f, 2))));
-  const double outward = volume >= 0 ? 1.0 : -1.0;
+  const double outward = signedVolume(closed) >= 0 ? 1.0 : -1.0;
   vtkSMPTools::For(0, grid.n[2],
                    [&](vtkIdType k0, vtkIdType k1)
                    {

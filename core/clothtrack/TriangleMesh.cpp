@@ -62,6 +62,15 @@ double surfaceArea(const TriangleMesh& mesh)
   return faceAreas(mesh).sum();
 }
 
+double signedVolume(const TriangleMesh& mesh)
+{
+  double volume = 0;
+  for (int f = 0; f < mesh.numFaces(); ++f)
+    volume +=
+        mesh.vertex(mesh.F(f, 0)).dot(mesh.vertex(mesh.F(f, 1)).cross(mesh.vertex(mesh.F(f, 2))));
+  return volume / 6.0;
+}
+
 double meanEdgeLength(const TriangleMesh& mesh)
 {
   if (mesh.numFaces() == 0) return 0.0;

@@ -28,6 +28,8 @@ Points faceNormals(const TriangleMesh& mesh);
 Points vertexNormals(const TriangleMesh& mesh);
 /// Sum of triangle areas.
 double surfaceArea(const TriangleMesh& mesh);
+/// Volume enclosed by a closed mesh, positive when its triangles face outward.
+double signedVolume(const TriangleMesh& mesh);
 /// Mean edge length over all triangle edges (each interior edge counted twice).
 double meanEdgeLength(const TriangleMesh& mesh);
 } // namespace clothtrack

@@ -50,6 +50,9 @@ TEST(BodyModel, MeanBodyIsAClosedGenusZeroManifold)
   expectClosedGenusZeroManifold(m.mesh);
   const double height = m.mesh.V.col(1).maxCoeff() - m.mesh.V.col(1).minCoeff();
   EXPECT_NEAR(height, 1.70, 0.1);
+  // Faces outward, and encloses a human volume (about 60-80 litres).
+  EXPECT_GT(signedVolume(m.mesh), 0.04);
+  EXPECT_LT(signedVolume(m.mesh), 0.12);
 }
 
 TEST(BodyModel, RandomShapesArePlausibleManifolds)

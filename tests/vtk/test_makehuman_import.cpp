@@ -35,6 +35,7 @@ TEST(MakeHumanImport, ClosedGenusZeroModelWithShapeSpaceAndLandmarks)
   const double height = model.mesh.V.col(1).maxCoeff() - model.mesh.V.col(1).minCoeff();
   EXPECT_NEAR(height, 1.7, 0.15);
   EXPECT_NEAR(model.mesh.V.col(1).minCoeff(), 0.0, 1e-9);
+  EXPECT_GT(signedVolume(model.mesh), 0.03); // faces outward
   EXPECT_EQ(model.landmarks.size(), 40u);
   for (int i = 0; i < model.numVertices(); i += 97)
     EXPECT_NEAR(model.weights.row(i).sum(), 1.0, 1e-9);

@@ -302,6 +302,8 @@ BodyModel importMakeHuman(const std::string& folderName, const MakeHumanImportOp
     X.row(s).tail(3 * NumJoints) = Eigen::Map<const Eigen::RowVectorXd>(J.data(), 3 * NumJoints);
   }
 
+  if (signedVolume(TriangleMesh{bodyVertices(full.V), body.F}) < 0)
+    body.F.col(1).swap(body.F.col(2)); // body models face outward
   BodyModel model;
   model.weights = weights;
   learnShapeSpace(std::move(X), body.F, options.numComponents, model);

@@ -1,0 +1,123 @@
+#include "ctLandmarkTransfer.h"
+
+#include "ctMeshConversion.h"
+
+#include <clothtrack/Error.h>
+#include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/MeshValidation.h>
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+vtkStandardNewMacro(ctLandmarkTransfer);
+
+ctLandmarkTransfer::ctLandmarkTransfer()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+int ctLandmarkTransfer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                    vtkInformationVector* outputVector)
+{
+  using namespace clothtrack;
+  vtkPolyData* frameData = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* body = vtkPolyData::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!body)
+  {
+    vtkErrorMacro(<< "landmark transfer: no body landmarks on input port 1");
+    return 0;
+  }
+  try
+  {
+    const TriangleMesh frame = toTriangleMesh(frameData, "landmark transfer frame");
+    validateMesh(frame, "landmark transfer frame");
+    vtkDataArray* normals = body->GetPointData()->GetArray("Normal");
+    vtkDataArray* directions = body->GetPointData()->GetArray("Direction");
+    if (!normals || !directions || normals->GetNumberOfComponents() != 3 ||
+        directions->GetNumberOfComponents() != 3)
+      throw Error(
+          "landmark transfer: the body points need 3-component Normal and Direction arrays");
+    const vtkIdType n = body->GetNumberOfPoints();
+    if (n == 0)
+      throw Error(
+          "landmark transfer: no body landmark (a frame with no landmarks cannot be aligned)");
+    std::vector<OrientedPoint> points(n);
+    for (vtkIdType k = 0; k < n; ++k)
+      points[k] = {Vec3(body->GetPoint(k)), Vec3(normals->GetTuple3(k)),
+                   Vec3(directions->GetTuple3(k))};
+    const SurfaceLocator locator(frame);
+    LandmarkTransferOptions options;
+    options.outsideTolerance = this->OutsideTolerance;
+    options.insideTolerance = this->InsideTolerance;
+    const std::vector<TransferredLandmark> result =
+        transferLandmarks(points, frame, locator, options);
+
+    vtkNew<vtkPoints> positions;
+    positions->SetDataTypeToDouble();
+    vtkNew<vtkCellArray> verts;
+    vtkNew<vtkIntArray> valid, face;
+    valid->SetName("Valid");
+    face->SetName("FrameFace");
+    vtkNew<vtkDoubleArray> direction, bary, offset;
+    direction->SetName("Direction");
+    direction->SetNumberOfComponents(3);
+    bary->SetName("FrameBarycentric");
+    bary->SetNumberOfComponents(3);
+    offset->SetName("Offset");
+    int found = 0;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const TransferredLandmark& t = result[k];
+      found += t.valid;
+      const Vec3 p = t.valid ? t.point.position : points[k].position;
+      verts->InsertNextCell(1);
+      verts->InsertCellPoint(positions->InsertNextPoint(p.data()));
+      valid->InsertNextValue(t.valid ? 1 : 0);
+      face->InsertNextValue(t.valid ? t.point.face : -1);
+      const Vec3 d = t.valid ? t.direction : points[k].direction;
+      direction->InsertNextTuple(d.data());
+      bary->InsertNextTuple(t.point.bary.data());
+      offset->InsertNextValue(t.offset);
+    }
+    output->SetPoints(positions);
+    output->SetVerts(verts);
+    for (const char* name : {"LandmarkId", "LandmarkName", "VertexId"})
+      if (vtkAbstractArray* a = body->GetPointData()->GetAbstractArray(name))
+        output->GetPointData()->AddArray(a);
+    output->GetPointData()->AddArray(valid);
+    output->GetPointData()->AddArray(direction);
+    output->GetPointData()->SetActiveVectors("Direction");
+    output->GetPointData()->AddArray(offset);
+    output->GetPointData()->AddArray(face);
+    output->GetPointData()->AddArray(bary);
+    vtkNew<vtkDoubleArray> fraction;
+    fraction->SetName("FoundFraction");
+    fraction->InsertNextValue(static_cast<double>(found) / n);
+    output->GetFieldData()->AddArray(fraction);
+    if (found == 0)
+      vtkWarningMacro(<< "landmark transfer: no landmark could be placed on this frame");
+  }
+  catch (const Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return 1;
+}
+
+void ctLandmarkTransfer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "OutsideTolerance: " << this->OutsideTolerance << "\n";
+  os << indent << "InsideTolerance: " << this->InsideTolerance << "\n";
+}
