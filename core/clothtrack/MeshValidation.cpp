@@ -1,6 +1,7 @@
 #include "MeshValidation.h"
 
 #include "Error.h"
+#include "ManifoldRepair.h"
 #include "PointIndex.h"
 
 #include <Eigen/Geometry>
@@ -137,6 +138,25 @@ CleaningReport validateAndClean(TriangleMesh& mesh, const std::string& name,
   validateMesh(mesh, name);
   CleaningReport report = cleanMesh(mesh, options);
   if (mesh.numFaces() == 0) throw Error(name + ": every face has zero area");
+  if (options.makeManifold)
+  {
+    const ManifoldRepairReport repair = makeManifold(mesh);
+    report.nonManifoldFacesRemoved = repair.removedFaces;
+    report.bowTieVerticesSplit = repair.splitVertices;
+    if (repair.removedFaces)
+      report.warnings.push_back("removed " + std::to_string(repair.removedFaces) +
+                                " faces on edges shared by more than two faces (non-manifold)");
+    if (repair.splitVertices)
+      report.warnings.push_back("split " + std::to_string(repair.splitVertices) +
+                                " non-manifold (bow-tie) vertices");
+    if (repair.removedFaces)
+    {
+      CleaningOptions unusedOnly;
+      unusedOnly.mergeDuplicateVertices = false;
+      unusedOnly.removeDegenerateFaces = false;
+      cleanMesh(mesh, unusedOnly); // vertices only the removed faces used
+    }
+  }
   return report;
 }
 } // namespace clothtrack

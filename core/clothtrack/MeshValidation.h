@@ -15,6 +15,8 @@ struct CleaningOptions
   bool mergeDuplicateVertices = true;
   bool removeDegenerateFaces = true;
   bool removeUnusedVertices = true;
+  /// validateAndClean only: drop faces beyond two per edge and split bow-tie vertices.
+  bool makeManifold = true;
 };
 
 struct CleaningReport
@@ -23,6 +25,8 @@ struct CleaningReport
   int degenerateFaces = 0;
   int duplicateFaces = 0;
   int unusedVertices = 0;
+  int nonManifoldFacesRemoved = 0;
+  int bowTieVerticesSplit = 0;
   /// Human-readable lines for each repair made (empty when the mesh was already clean).
   std::vector<std::string> warnings;
 };

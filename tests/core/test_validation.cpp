@@ -1,4 +1,5 @@
 #include <clothtrack/Error.h>
+#include <clothtrack/MeshTopology.h>
 #include <clothtrack/MeshValidation.h>
 #include <clothtrack/Primitives.h>
 
@@ -81,4 +82,23 @@ TEST(Validation, AllDegenerateIsAnError)
   mesh.F.resize(1, 3);
   mesh.F << 0, 1, 2;
   EXPECT_THROW(validateAndClean(mesh, "line"), Error);
+}
+
+TEST(Validation, NonManifoldEdgesAndBowTiesAreRepaired)
+{
+  // Three triangles on one edge, plus a separate bow-tie pair touching at one vertex.
+  TriangleMesh mesh;
+  mesh.V.resize(9, 3);
+  mesh.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, //
+      5, 0, 0, 6, 0, 0, 6, 1, 0, 4, 0, 0;
+  mesh.V.conservativeResize(10, 3);
+  mesh.V.row(9) << 4, -1, 0;
+  mesh.F.resize(5, 3);
+  mesh.F << 0, 1, 2, 1, 0, 3, 0, 1, 4, 5, 6, 7, 5, 8, 9;
+  const CleaningReport report = validateAndClean(mesh, "fin");
+  EXPECT_EQ(report.nonManifoldFacesRemoved, 1);
+  EXPECT_EQ(report.bowTieVerticesSplit, 1);
+  EXPECT_EQ(mesh.numFaces(), 4);
+  EXPECT_TRUE(checkManifold(mesh, buildTopology(mesh)).isManifold());
+  ASSERT_EQ(report.warnings.size(), 2u); // removed face, split vertex
 }
