@@ -312,17 +312,7 @@ BodyModel importMakeHuman(const std::string& folderName, const MakeHumanImportOp
   SkeletonGeometry skeletonGeometry;
   skeletonGeometry.joints = model.joints;
   skeletonGeometry.boneEnds = model.joints;
-  const auto& parents = jointParents();
-  std::vector<bool> hasEnd(NumJoints, false);
-  for (int j = 1; j < NumJoints; ++j)
-  {
-    const int p = parents[j];
-    if (!hasEnd[p] && !((p == Spine3 && j != Neck) || (p == Pelvis && j != Spine1)))
-    {
-      skeletonGeometry.boneEnds.row(p) = model.joints.row(j);
-      hasEnd[p] = true;
-    }
-  }
+  setInnerBoneEnds(skeletonGeometry);
   const double stature = model.mesh.V.col(1).maxCoeff() - model.mesh.V.col(1).minCoeff();
   skeletonGeometry.boneEnds.row(Head) =
       (model.joints.row(Head).transpose() +

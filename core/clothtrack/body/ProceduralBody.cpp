@@ -84,19 +84,7 @@ SkeletonGeometry proceduralSkeleton(double H)
     s.boneEnds.row(toe) << side * 0.074 * H, 0.012 * H, 0.112 * H;
   }
   s.boneEnds.row(Head) << 0.0, H, 0.0;
-  // Every other bone ends at its first child; the spine's at the next vertebra, the pelvis's at
-  // the first spine joint, each clavicle's at its shoulder.
-  const auto& parents = jointParents();
-  std::array<bool, NumJoints> set_{};
-  for (int j = 1; j < NumJoints; ++j)
-  {
-    const int p = parents[j];
-    if (!set_[p] && !(p == Spine3 && j != Neck) && !(p == Pelvis && j != Spine1))
-    {
-      s.boneEnds.row(p) = s.joints.row(j);
-      set_[p] = true;
-    }
-  }
+  setInnerBoneEnds(s);
   return s;
 }
 

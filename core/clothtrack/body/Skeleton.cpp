@@ -22,4 +22,21 @@ const std::array<int, NumJoints>& jointParents()
       RightAnkle};
   return parents;
 }
+
+void setInnerBoneEnds(SkeletonGeometry& skeleton)
+{
+  const auto& parents = jointParents();
+  std::array<bool, NumJoints> done{};
+  for (int j = 1; j < NumJoints; ++j)
+  {
+    const int p = parents[j];
+    // The chest and the pelvis have several children: their bones follow the spine.
+    const bool branch = (p == Spine3 && j != Neck) || (p == Pelvis && j != Spine1);
+    if (!done[p] && !branch)
+    {
+      skeleton.boneEnds.row(p) = skeleton.joints.row(j);
+      done[p] = true;
+    }
+  }
+}
 } // namespace clothtrack

@@ -49,4 +49,9 @@ struct SkeletonGeometry
   /// End of the bone of each joint: its child's position, or the leaf's end point.
   Points boneEnds = Points::Zero(NumJoints, 3);
 };
+
+/// Sets the end of every inner bone to the child that continues it (the pelvis's to spine1, each
+/// vertebra's to the next, a clavicle's to its shoulder, a limb segment's to the next joint).
+/// Leaf bones (head, wrists, toes) keep the ends they have.
+void setInnerBoneEnds(SkeletonGeometry& skeleton);
 } // namespace clothtrack

@@ -36,19 +36,9 @@ ClothSimulator::ClothSimulator(const BodyModel& model, const Eigen::VectorXd& be
   }
 
   // Collision capsules: every bone with a body part around it, radius from its vertices.
-  boneEnds_ = restJoints_;
-  const auto& parents = jointParents();
-  std::vector<bool> hasEnd(NumJoints, false);
-  for (int j = 1; j < NumJoints; ++j)
-  {
-    const int p = parents[j];
-    const bool skip = (p == Spine3 && j != Neck) || (p == Pelvis && j != Spine1);
-    if (!hasEnd[p] && !skip)
-    {
-      boneEnds_.row(p) = restJoints_.row(j);
-      hasEnd[p] = true;
-    }
-  }
+  SkeletonGeometry skeleton{restJoints_, restJoints_}; // leaf bones: zero length
+  setInnerBoneEnds(skeleton);
+  boneEnds_ = skeleton.boneEnds;
   for (int j = 0; j < NumJoints; ++j)
   {
     std::vector<double> distances;
