@@ -274,6 +274,23 @@ TriangleMesh loadFrame(const std::string& path, const FrameConventions& conventi
   return mesh;
 }
 
+std::string writeCollectionFrame(const std::string& pvdPath, int index, vtkPolyData* frame,
+                                 bool alsoOBJ)
+{
+  const fs::path pvd(pvdPath);
+  const std::string stem = pvd.stem().string();
+  const fs::path folder = pvd.parent_path() / stem;
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec) throw Error(folder.string() + ": cannot create folder (" + ec.message() + ")");
+  char suffix[32];
+  std::snprintf(suffix, sizeof(suffix), "_%04d", index);
+  const std::string name = stem + suffix;
+  writeMeshFile((folder / (name + ".vtp")).string(), frame);
+  if (alsoOBJ) writeMeshFile((folder / (name + ".obj")).string(), frame);
+  return stem + "/" + name + ".vtp";
+}
+
 void writeCollection(const std::string& pvdPath,
                      const std::vector<std::pair<double, std::string>>& entries)
 {

@@ -43,6 +43,12 @@ CTREADERS_EXPORT TriangleMesh loadFrame(const std::string& path,
                                         const FrameConventions& conventions,
                                         std::vector<std::string>* warnings = nullptr);
 
+/// Writes frame `index` of the collection `pvdPath` (out/name.pvd) as out/name/name_NNNN.vtp, and
+/// as .obj beside it when `alsoOBJ`; creates the folder. Returns the .vtp path relative to the
+/// .pvd, for the collection entry.
+CTREADERS_EXPORT std::string writeCollectionFrame(const std::string& pvdPath, int index,
+                                                  vtkPolyData* frame, bool alsoOBJ);
+
 /// Writes a ParaView collection file listing (time, relative path) entries, atomically.
 CTREADERS_EXPORT void writeCollection(const std::string& pvdPath,
                                       const std::vector<std::pair<double, std::string>>& entries);

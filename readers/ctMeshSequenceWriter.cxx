@@ -14,11 +14,6 @@
 #include <vtkPolyData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 
-#include <cstdio>
-#include <filesystem>
-
-namespace fs = std::filesystem;
-
 vtkStandardNewMacro(ctMeshSequenceWriter);
 
 ctMeshSequenceWriter::ctMeshSequenceWriter() = default;
@@ -121,20 +116,10 @@ bool ctMeshSequenceWriter::WriteFrame(vtkDataObject* frame, int index, double ti
     vtkErrorMacro(<< this->FileName << ": frame " << index << " is not a vtkPolyData");
     return false;
   }
-  const fs::path pvd(this->FileName);
-  const std::string stem = pvd.stem().string();
-  const fs::path folder = pvd.parent_path() / stem;
-  char name[64];
-  std::snprintf(name, sizeof(name), "_%04d", index);
-  const std::string relative = stem + "/" + stem + name + ".vtp";
+  std::string relative;
   try
   {
-    std::error_code ec;
-    fs::create_directories(folder, ec);
-    if (ec)
-      throw clothtrack::Error(folder.string() + ": cannot create folder (" + ec.message() + ")");
-    clothtrack::writeMeshFile((pvd.parent_path() / relative).string(), poly);
-    if (this->WriteOBJ) clothtrack::writeMeshFile((folder / (stem + name + ".obj")).string(), poly);
+    relative = clothtrack::writeCollectionFrame(this->FileName, index, poly, this->WriteOBJ);
   }
   catch (const clothtrack::Error& e)
   {

@@ -43,13 +43,6 @@ int runConvert(const Args& args)
     throw UsageError{"--output must end in .pvd (got '" + output + "')"};
 
   const std::vector<std::string> frames = listFrames(input);
-  const fs::path pvd(output);
-  const std::string stem = pvd.stem().string();
-  const fs::path folder = pvd.parent_path() / stem;
-  std::error_code ec;
-  fs::create_directories(folder, ec);
-  if (ec) throw UsageError{folder.string() + ": cannot create folder (" + ec.message() + ")"};
-
   std::vector<std::pair<double, std::string>> entries;
   Progress progress("convert", static_cast<int>(frames.size()));
   for (size_t k = 0; k < frames.size(); ++k)
@@ -62,11 +55,7 @@ int runConvert(const Args& args)
     source->SetName("SourceFile");
     source->InsertNextValue(frames[k]);
     poly->GetFieldData()->AddArray(source);
-    char name[32];
-    std::snprintf(name, sizeof(name), "_%04zu", k);
-    const std::string relative = stem + "/" + stem + name + ".vtp";
-    writeMeshFile((pvd.parent_path() / relative).string(), poly);
-    if (obj) writeMeshFile((folder / (stem + name + ".obj")).string(), poly);
+    const std::string relative = writeCollectionFrame(output, static_cast<int>(k), poly, obj);
     entries.emplace_back(k / seq.fps, relative);
     progress.step(static_cast<int>(k + 1));
   }
