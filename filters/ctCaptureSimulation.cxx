@@ -7,9 +7,11 @@
 #include <clothtrack/MeshValidation.h>
 #include <clothtrack/SurfaceLocator.h>
 
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -284,5 +286,29 @@ TriangleMesh simulateCapture(const TriangleMesh& truth, const CaptureOptions& op
                      });
   }
   return captured;
+}
+
+void addSourceMapArrays(const SourceMap& map, vtkPolyData* mesh)
+{
+  const vtkIdType n = static_cast<vtkIdType>(map.face.size());
+  vtkNew<vtkIntArray> face;
+  face->SetName("SourceFace");
+  face->SetNumberOfTuples(n);
+  vtkNew<vtkDoubleArray> bary;
+  bary->SetName("SourceBarycentric");
+  bary->SetNumberOfComponents(3);
+  bary->SetNumberOfTuples(n);
+  vtkNew<vtkDoubleArray> distance;
+  distance->SetName("SourceDistance");
+  distance->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    face->SetValue(i, map.face[i]);
+    bary->SetTuple(i, map.barycentric[i].data());
+    distance->SetValue(i, map.distance[i]);
+  }
+  mesh->GetPointData()->AddArray(face);
+  mesh->GetPointData()->AddArray(bary);
+  mesh->GetPointData()->AddArray(distance);
 }
 } // namespace clothtrack

@@ -6,44 +6,13 @@
 #include <clothtrack/Error.h>
 
 #include <vtkDataArray.h>
-#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
-#include <vtkIntArray.h>
 #include <vtkObjectFactory.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 vtkStandardNewMacro(ctCaptureSimulator);
-
-namespace clothtrack
-{
-// Attaches a source map to a captured mesh as point data (shared with the app).
-void addSourceMapArrays(const SourceMap& map, vtkPolyData* mesh)
-{
-  const vtkIdType n = static_cast<vtkIdType>(map.face.size());
-  vtkNew<vtkIntArray> face;
-  face->SetName("SourceFace");
-  face->SetNumberOfTuples(n);
-  vtkNew<vtkDoubleArray> bary;
-  bary->SetName("SourceBarycentric");
-  bary->SetNumberOfComponents(3);
-  bary->SetNumberOfTuples(n);
-  vtkNew<vtkDoubleArray> distance;
-  distance->SetName("SourceDistance");
-  distance->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    face->SetValue(i, map.face[i]);
-    bary->SetTuple(i, map.barycentric[i].data());
-    distance->SetValue(i, map.distance[i]);
-  }
-  mesh->GetPointData()->AddArray(face);
-  mesh->GetPointData()->AddArray(bary);
-  mesh->GetPointData()->AddArray(distance);
-}
-} // namespace clothtrack
 
 int ctCaptureSimulator::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector)
