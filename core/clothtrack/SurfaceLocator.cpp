@@ -107,36 +107,40 @@ int SurfaceLocator::build(int begin, int end, const std::vector<Vec3>& centroids
   return id;
 }
 
-SurfacePoint SurfaceLocator::closestPoint(const Vec3& query, double maxDistance) const
+SurfacePoint SurfaceLocator::closestPoint(const Vec3& query, double maxDistance, int hintFace) const
 {
   SurfacePoint best;
   if (nodes_.empty()) return best;
   double best2 = std::isfinite(maxDistance) ? maxDistance * maxDistance
                                             : std::numeric_limits<double>::infinity();
-  std::vector<int> stack{0};
-  while (!stack.empty())
+  auto tryFace = [&](int f)
   {
-    const Node& node = nodes_[stack.back()];
-    stack.pop_back();
+    Vec3 bary;
+    const Vec3 p =
+        closestPointOnTriangle(query, mesh_.vertex(mesh_.F(f, 0)), mesh_.vertex(mesh_.F(f, 1)),
+                               mesh_.vertex(mesh_.F(f, 2)), bary);
+    const double d2 = (p - query).squaredNorm();
+    if (d2 <= best2)
+    {
+      best2 = d2;
+      best.face = f;
+      best.bary = bary;
+      best.position = p;
+    }
+  };
+  // A good guess bounds the search from the start (queries that move little between calls).
+  if (hintFace >= 0 && hintFace < mesh_.numFaces()) tryFace(hintFace);
+  // Median splits keep the depth below log2(faces) + 1, so a fixed stack suffices.
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = nodes_[stack[--top]];
     if (node.box.squaredExteriorDistance(query) > best2) continue;
     if (node.left < 0)
     {
-      for (int i = node.begin; i < node.end; ++i)
-      {
-        const int f = order_[i];
-        Vec3 bary;
-        const Vec3 p =
-            closestPointOnTriangle(query, mesh_.vertex(mesh_.F(f, 0)), mesh_.vertex(mesh_.F(f, 1)),
-                                   mesh_.vertex(mesh_.F(f, 2)), bary);
-        const double d2 = (p - query).squaredNorm();
-        if (d2 <= best2)
-        {
-          best2 = d2;
-          best.face = f;
-          best.bary = bary;
-          best.position = p;
-        }
-      }
+      for (int i = node.begin; i < node.end; ++i) tryFace(order_[i]);
       continue;
     }
     // Visit the nearer child first so that the bound tightens early.
@@ -144,13 +148,13 @@ SurfacePoint SurfaceLocator::closestPoint(const Vec3& query, double maxDistance)
     const double dr = nodes_[node.right].box.squaredExteriorDistance(query);
     if (dl < dr)
     {
-      stack.push_back(node.right);
-      stack.push_back(node.left);
+      stack[top++] = node.right;
+      stack[top++] = node.left;
     }
     else
     {
-      stack.push_back(node.left);
-      stack.push_back(node.right);
+      stack[top++] = node.left;
+      stack[top++] = node.right;
     }
   }
   if (best.valid()) best.distance = std::sqrt(best2);
@@ -181,26 +185,29 @@ bool lineBoxRange(const Eigen::AlignedBox3d& box, const Vec3& o, const Vec3& d, 
 }
 } // namespace
 
-std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec3& direction) const
+std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec3& direction,
+                                                   double minT) const
 {
   std::vector<LineHit> hits;
   if (nodes_.empty() || !(direction.squaredNorm() > 0)) return hits;
-  std::vector<int> stack{0};
-  while (!stack.empty())
+  const double tol = 1e-9 / direction.norm();
+  int stack[128]; // median splits: depth below log2(faces) + 1
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
   {
-    const Node& node = nodes_[stack.back()];
-    stack.pop_back();
+    const Node& node = nodes_[stack[--top]];
     double t0, t1;
     // Boxes are inflated slightly so that a line grazing a flat box is not lost.
     Eigen::AlignedBox3d box = node.box;
     const Vec3 pad = Vec3::Constant(1e-9 * (1.0 + box.sizes().norm()));
     box.extend(box.min() - pad);
     box.extend(box.max() + pad);
-    if (!lineBoxRange(box, origin, direction, t0, t1)) continue;
+    if (!lineBoxRange(box, origin, direction, t0, t1) || t1 < minT - tol) continue;
     if (node.left >= 0)
     {
-      stack.push_back(node.left);
-      stack.push_back(node.right);
+      stack[top++] = node.left;
+      stack[top++] = node.right;
       continue;
     }
     for (int i = node.begin; i < node.end; ++i)
@@ -222,6 +229,7 @@ std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec
       if (v < 0 || u + v > 1) continue;
       LineHit hit;
       hit.t = e2.dot(qvec) * inv;
+      if (hit.t < minT - tol) continue;
       hit.point.face = f;
       hit.point.bary = {1 - u - v, u, v};
       hit.point.position = origin + hit.t * direction;
@@ -230,7 +238,6 @@ std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec
     }
   }
   std::sort(hits.begin(), hits.end(), [](const LineHit& x, const LineHit& y) { return x.t < y.t; });
-  const double tol = 1e-9 / direction.norm();
   std::vector<LineHit> unique;
   for (const auto& h : hits)
     if (unique.empty() || h.t - unique.back().t > tol) unique.push_back(h);

@@ -37,14 +37,18 @@ public:
   explicit SurfaceLocator(const TriangleMesh& mesh);
 
   /// Closest surface point; invalid (face -1) when the mesh is empty or nothing lies within
-  /// maxDistance.
+  /// maxDistance. `hintFace`, a face likely near the answer (the previous answer for a query
+  /// that moved a little), only speeds the search up.
   SurfacePoint closestPoint(const Vec3& query,
-                            double maxDistance = std::numeric_limits<double>::infinity()) const;
+                            double maxDistance = std::numeric_limits<double>::infinity(),
+                            int hintFace = -1) const;
 
   /// Every crossing of the infinite line origin + t * direction with the surface, sorted by t
   /// (negative t lies behind the origin). Hits closer than a tiny tolerance (a line through a
   /// shared edge or vertex) are reported once.
-  std::vector<LineHit> intersectLine(const Vec3& origin, const Vec3& direction) const;
+  /// `minT` drops the crossings before origin + minT * direction (0: a ray).
+  std::vector<LineHit> intersectLine(const Vec3& origin, const Vec3& direction,
+                                     double minT = -std::numeric_limits<double>::infinity()) const;
 
 private:
   struct Node

@@ -84,3 +84,22 @@ TEST(SurfaceLocator, LineThroughASharedVertexIsReportedOnce)
   ASSERT_EQ(hits.size(), 1u);
   EXPECT_NEAR(hits[0].t, 1.0, 1e-12);
 }
+
+TEST(SurfaceLocator, HintFaceOnlySpeedsUpTheSearch)
+{
+  const TriangleMesh mesh = torus(1.0, 0.3, 30, 15);
+  const SurfaceLocator locator(mesh);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.6, 1.6);
+  std::uniform_int_distribution<int> face(0, mesh.numFaces() - 1);
+  for (int q = 0; q < 300; ++q)
+  {
+    const Vec3 query(u(rng), u(rng), u(rng) * 0.5);
+    const SurfacePoint plain = locator.closestPoint(query);
+    const SurfacePoint hinted = locator.closestPoint(query, 10.0, face(rng));
+    ASSERT_TRUE(hinted.valid());
+    EXPECT_NEAR(hinted.distance, plain.distance, 1e-12);
+    // A far hint must not be returned when nothing lies within the limit.
+    EXPECT_FALSE(locator.closestPoint(query, plain.distance * 0.5, face(rng)).valid());
+  }
+}
