@@ -1,0 +1,109 @@
+#pragma once
+// Body shape and pose under clothing for a whole sequence (Shehu et al. 2016 section 4.1,
+// after Yang et al. 2016): one shape beta for the sequence and a pose per frame minimising
+//   E_body = w_l E_l + w_n E_n + w_w E_w
+//  - E_l: detected extremities of the frame (head top, hand and toe tips: persistent maxima of
+//    the geodesic distance from the surface's centre, see Extremities.h) against the same
+//    extremities of the body, matched by label and proximity;
+//  - E_n: body samples to their closest frame points (point-to-plane, robust Cauchy weights so
+//    that body parts far under wide clothing are not dragged out to the cloth; pairs whose
+//    normals disagree are dropped);
+//  - E_w: body samples OUTSIDE the frame (signed distance to the closest point, positive
+//    outside) are pushed in, so that the body stays under the clothing;
+// plus a temporal term (joint rotations close to the previous frame's) and weak priors (joint
+// rotations and beta towards zero: beta ~ N(0, I) in the model's units).
+//
+// Schedule (per frame, see BodyFitOptions::stages): landmarks dominate first (they are sparse
+// but reliable and bring the limbs near their place), then the dense terms take over and the
+// inside term is raised last, when the body is close enough for the inside/outside sign of
+// the closest point to be right.
+//
+// Initialisation is automatic: the first frame tries several headings about the up axis, each
+// frame then starts from its neighbour's result; a frame whose fit looks poor is retried from
+// all headings (the person may have turned quickly) and the better result kept.
+// The shape is estimated on evenly spread key frames alternating with their poses, then every
+// frame is fitted again with the final shape.
+#include "BodyModel.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace clothtrack
+{
+struct BodyFitStage
+{
+  double landmarkWeight; ///< w_l
+  double nearestWeight;  ///< w_n
+  double insideWeight;   ///< w_w
+  int iterations;
+  /// Closest frame points are searched this far (metres): wide while the body is far, narrow
+  /// later, where a sample with nothing near is deep under the cloth and should not pull.
+  double searchRadius;
+};
+
+struct BodyFitOptions
+{
+  std::vector<BodyFitStage> stages = {
+      {1.0, 0.1, 0.0, 6, 0.4}, {0.5, 1.0, 1.0, 8, 0.15}, {0.2, 1.0, 4.0, 8, 0.1}};
+  double temporalWeight = 0.01;   ///< on joint rotation changes from the previous frame (1/rad^2)
+  double posePriorWeight = 0.002; ///< on joint rotations (root excluded)
+  double shapePriorWeight = 2e-5; ///< on beta
+  int shapeComponents = 16;       ///< leading components fitted (at most the model's)
+  int shapeFrames = 8;            ///< key frames for the shape
+  int shapeRounds = 3;            ///< alternations of shape and key-frame poses
+  int samples = 1000;             ///< body vertices used by the dense terms
+  double robustScale = 0.03;      ///< Cauchy scale of E_n, metres
+  double extremityPersistence = 0.15; ///< metres
+  double extremityGate =
+      0.35; ///< head and toes: detected and body extremities further apart are not paired
+  double handGate = 0.8;         ///< the same for the hands, which move fastest and furthest
+  int headings = 8;              ///< headings tried when (re)initialising
+  Vec3 up = Vec3::UnitY();       ///< up axis of the frames
+  double poorDistance = 0.05;    ///< median body-to-frame distance above which a fit is poor
+  double insideTolerance = 0.02; ///< a body sample this far outside still counts as inside
+  double poorInside = 0.75;      ///< fraction of the body inside the frame below which it is poor
+};
+
+enum class BodyFitStatus : int
+{
+  Ok = 0,
+  Poor = 1,  ///< fitted, but the body is far from or outside the frame: check it
+  Failed = 2 ///< not fitted (bad frame); the pose is the neighbour's
+};
+
+const char* bodyFitStatusName(BodyFitStatus status);
+
+struct BodyFrameFit
+{
+  BodyPose pose;
+  BodyFitStatus status = BodyFitStatus::Ok;
+  std::string message;
+  double energy = 0.0;
+  double medianDistance = 0.0; ///< body samples to the frame, metres
+  double insideFraction = 0.0; ///< body samples inside the frame or within insideTolerance
+  int extremitiesDetected = 0;
+  int extremitiesMatched = 0;
+  std::vector<Vec3> extremities; ///< detected on the frame
+};
+
+struct BodyFitResult
+{
+  Eigen::VectorXd beta;
+  std::vector<BodyFrameFit> frames;
+};
+
+/// Progress in [0, 1]; return false to cancel (throws Error("cancelled")).
+using BodyFitProgress = std::function<bool(double)>;
+
+/// Fits the model to every frame (frames need not share connectivity; null or empty frames are
+/// flagged Failed). Throws Error when no frame can be fitted at all.
+BodyFitResult fitBodySequence(const BodyModel& model,
+                              const std::vector<const TriangleMesh*>& frames,
+                              const BodyFitOptions& options = {},
+                              const BodyFitProgress& progress = {});
+
+/// The body's extremity vertices, in the order head top, left hand, right hand, left toe,
+/// right toe (the geodesically most distant vertex of each end segment in the rest pose).
+std::vector<int> bodyExtremityVertices(const BodyModel& model);
+} // namespace clothtrack
