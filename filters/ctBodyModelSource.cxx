@@ -2,9 +2,11 @@
 
 #include "ctBodyModelIO.h"
 #include "ctBuiltinBodyModel.h"
+#include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
 
 #include <clothtrack/Error.h>
+#include <clothtrack/body/OrientedLandmarks.h>
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -110,8 +112,7 @@ int ctBodyModelSource::RequestData(vtkInformation*, vtkInformationVector**,
     output->ShallowCopy(toPolyData(posed));
     addBodyModelArrays(model, joints, output);
 
-    // Landmarks: position, tangent direction towards the direction vertex, ids.
-    const Points normals = vertexNormals(posed);
+    // Landmarks: position, outward normal, tangent direction towards the direction vertex, ids.
     vtkPolyData* landmarks = vtkPolyData::GetData(outputVector, 1);
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -122,33 +123,19 @@ int ctBodyModelSource::RequestData(vtkInformation*, vtkInformationVector**,
     vtkNew<vtkDoubleArray> normal;
     normal->SetName("Normal");
     normal->SetNumberOfComponents(3);
-    vtkNew<vtkIntArray> ids, vertexIds;
-    ids->SetName("LandmarkId");
-    vertexIds->SetName("VertexId");
-    vtkNew<vtkStringArray> names;
-    names->SetName("LandmarkName");
-    for (size_t k = 0; k < model.landmarks.size(); ++k)
+    for (const OrientedPoint& p : orientedLandmarks(model, posed))
     {
-      const OrientedLandmark& l = model.landmarks[k];
-      const Vec3 p = posed.vertex(l.vertex), n = normals.row(l.vertex).transpose();
-      Vec3 d = posed.vertex(l.directionVertex) - p;
-      d = (d - d.dot(n) * n).normalized();
       verts->InsertNextCell(1);
-      verts->InsertCellPoint(points->InsertNextPoint(p.data()));
-      direction->InsertNextTuple(d.data());
-      normal->InsertNextTuple(n.data());
-      ids->InsertNextValue(static_cast<int>(k));
-      vertexIds->InsertNextValue(l.vertex);
-      names->InsertNextValue(l.name);
+      verts->InsertCellPoint(points->InsertNextPoint(p.position.data()));
+      direction->InsertNextTuple(p.direction.data());
+      normal->InsertNextTuple(p.normal.data());
     }
     landmarks->SetPoints(points);
     landmarks->SetVerts(verts);
-    landmarks->GetPointData()->AddArray(ids);
-    landmarks->GetPointData()->AddArray(vertexIds);
+    addLandmarkIdentity(model, landmarks);
     landmarks->GetPointData()->AddArray(direction);
     landmarks->GetPointData()->AddArray(normal);
     landmarks->GetPointData()->SetActiveVectors("Direction");
-    landmarks->GetPointData()->AddArray(names);
   }
   catch (const clothtrack::Error& e)
   {

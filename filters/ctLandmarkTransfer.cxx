@@ -1,5 +1,6 @@
 #include "ctLandmarkTransfer.h"
 
+#include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
 
 #include <clothtrack/Error.h>
@@ -62,48 +63,11 @@ int ctLandmarkTransfer::RequestData(vtkInformation*, vtkInformationVector** inpu
     const std::vector<TransferredLandmark> result =
         transferLandmarks(points, frame, locator, options);
 
-    vtkNew<vtkPoints> positions;
-    positions->SetDataTypeToDouble();
-    vtkNew<vtkCellArray> verts;
-    vtkNew<vtkIntArray> valid, face;
-    valid->SetName("Valid");
-    face->SetName("FrameFace");
-    vtkNew<vtkDoubleArray> direction, bary, offset;
-    direction->SetName("Direction");
-    direction->SetNumberOfComponents(3);
-    bary->SetName("FrameBarycentric");
-    bary->SetNumberOfComponents(3);
-    offset->SetName("Offset");
-    int found = 0;
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const TransferredLandmark& t = result[k];
-      found += t.valid;
-      const Vec3 p = t.valid ? t.point.position : points[k].position;
-      verts->InsertNextCell(1);
-      verts->InsertCellPoint(positions->InsertNextPoint(p.data()));
-      valid->InsertNextValue(t.valid ? 1 : 0);
-      face->InsertNextValue(t.valid ? t.point.face : -1);
-      const Vec3 d = t.valid ? t.direction : points[k].direction;
-      direction->InsertNextTuple(d.data());
-      bary->InsertNextTuple(t.point.bary.data());
-      offset->InsertNextValue(t.offset);
-    }
-    output->SetPoints(positions);
-    output->SetVerts(verts);
+    output->ShallowCopy(transferredLandmarksToPolyData(points, result));
     for (const char* name : {"LandmarkId", "LandmarkName", "VertexId"})
       if (vtkAbstractArray* a = body->GetPointData()->GetAbstractArray(name))
         output->GetPointData()->AddArray(a);
-    output->GetPointData()->AddArray(valid);
-    output->GetPointData()->AddArray(direction);
-    output->GetPointData()->SetActiveVectors("Direction");
-    output->GetPointData()->AddArray(offset);
-    output->GetPointData()->AddArray(face);
-    output->GetPointData()->AddArray(bary);
-    vtkNew<vtkDoubleArray> fraction;
-    fraction->SetName("FoundFraction");
-    fraction->InsertNextValue(static_cast<double>(found) / n);
-    output->GetFieldData()->AddArray(fraction);
+    const double found = output->GetFieldData()->GetArray("FoundFraction")->GetTuple1(0);
     if (found == 0)
       vtkWarningMacro(<< "landmark transfer: no landmark could be placed on this frame");
   }

@@ -7,6 +7,7 @@
 #include "ctSyntheticSequence.h"
 
 #include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/body/OrientedLandmarks.h>
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -19,22 +20,6 @@
 #include <cstdio>
 
 using namespace clothtrack;
-
-namespace
-{
-std::vector<OrientedPoint> bodyLandmarks(const BodyModel& model, const TriangleMesh& body)
-{
-  const Points normals = vertexNormals(body);
-  std::vector<OrientedPoint> points;
-  for (const auto& l : model.landmarks)
-  {
-    const Vec3 p = body.vertex(l.vertex), n = normals.row(l.vertex).transpose();
-    Vec3 d = body.vertex(l.directionVertex) - p;
-    points.push_back({p, n, (d - d.dot(n) * n).normalized()});
-  }
-  return points;
-}
-} // namespace
 
 TEST(LandmarkTransfer, OnCapturedDressFramesAgainstTheGroundTruth)
 {
@@ -51,7 +36,7 @@ TEST(LandmarkTransfer, OnCapturedDressFramesAgainstTheGroundTruth)
         [&](const SyntheticFrame& frame)
         {
           if (frame.index % 5 != 0) return;
-          const auto points = bodyLandmarks(model, frame.body);
+          const auto points = orientedLandmarks(model, frame.body);
           // Reference: the same rule on the true clothed surface.
           const SurfaceLocator truthLocator(frame.clothed);
           const auto truth = transferLandmarks(points, frame.clothed, truthLocator);

@@ -1,4 +1,5 @@
 #include "../core/TestUtil.h"
+#include "VtkTestUtil.h"
 
 #include "ctMeshConversion.h"
 #include "ctMeshSequenceReader.h"
@@ -25,30 +26,12 @@
 #include <filesystem>
 
 using namespace clothtrack;
+using clothtrack::test::ErrorWatch;
 using clothtrack::test::scratchDir;
 using clothtrack::test::writeText;
 
 namespace
 {
-// Records the first error an algorithm reports.
-struct ErrorWatch
-{
-  std::string message;
-  vtkNew<vtkCallbackCommand> command;
-  explicit ErrorWatch(vtkObject* object)
-  {
-    command->SetClientData(this);
-    command->SetCallback(
-        [](vtkObject*, unsigned long, void* client, void* data)
-        {
-          auto* self = static_cast<ErrorWatch*>(client);
-          if (self->message.empty()) self->message = static_cast<const char*>(data);
-        });
-    object->AddObserver(vtkCommand::ErrorEvent, command);
-    object->AddObserver(vtkCommand::WarningEvent, command);
-  }
-};
-
 template <class Writer> void writeWith(vtkPolyData* data, const std::string& path)
 {
   vtkNew<Writer> writer;

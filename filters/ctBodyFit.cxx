@@ -1,0 +1,247 @@
+#include "ctBodyFit.h"
+
+#include "ctBodyModelIO.h"
+#include "ctBuiltinBodyModel.h"
+#include "ctLandmarkPolyData.h"
+#include "ctMeshConversion.h"
+
+#include <clothtrack/Error.h>
+#include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/MeshValidation.h>
+#include <clothtrack/body/BodyFit.h>
+#include <clothtrack/body/OrientedLandmarks.h>
+
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+
+#include <memory>
+
+vtkStandardNewMacro(ctBodyFit);
+
+namespace
+{
+/// "frame K (file)" when the reader recorded the source file.
+std::string frameName(vtkDataObject* block, int k)
+{
+  std::string name = "frame " + std::to_string(k);
+  if (block)
+    if (auto* files =
+            vtkStringArray::SafeDownCast(block->GetFieldData()->GetAbstractArray("SourceFile")))
+      if (files->GetNumberOfValues() > 0) name += " (" + files->GetValue(0) + ")";
+  return name;
+}
+
+void addValue(vtkFieldData* data, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  data->AddArray(a);
+}
+} // namespace
+
+ctBodyFit::ctBodyFit()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(3);
+}
+
+vtkMultiBlockDataSet* ctBodyFit::GetLandmarksOutput()
+{
+  return vtkMultiBlockDataSet::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+vtkTable* ctBodyFit::GetStatusOutput()
+{
+  return vtkTable::SafeDownCast(this->GetOutputDataObject(2));
+}
+
+int ctBodyFit::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
+  else
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int ctBodyFit::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 2 ? "vtkTable" : "vtkMultiBlockDataSet");
+  return 1;
+}
+
+int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                           vtkInformationVector* outputVector)
+{
+  using namespace clothtrack;
+  auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
+  const int n = sequence ? static_cast<int>(sequence->GetNumberOfBlocks()) : 0;
+  if (n == 0)
+  {
+    vtkErrorMacro(<< "body fit: the sequence has no frame");
+    return 0;
+  }
+  try
+  {
+    std::unique_ptr<BodyModel> ownModel;
+    if (vtkPolyData* modelData = vtkPolyData::GetData(inputVector[1], 0))
+      ownModel = std::make_unique<BodyModel>(bodyModelFromPolyData(modelData, "body model input"));
+    const BodyModel& model = ownModel ? *ownModel : builtinBodyModel();
+
+    // Frames that cannot be read as surfaces are flagged, not fatal.
+    std::vector<TriangleMesh> meshes(n);
+    std::vector<const TriangleMesh*> frames(n, nullptr);
+    for (int k = 0; k < n; ++k)
+    {
+      vtkDataObject* block = sequence->GetBlock(static_cast<unsigned>(k));
+      const std::string name = frameName(block, k);
+      try
+      {
+        auto* poly = vtkPolyData::SafeDownCast(block);
+        if (!poly) throw Error(name + " is not a vtkPolyData");
+        meshes[k] = toTriangleMesh(poly, name);
+        validateMesh(meshes[k], name);
+        frames[k] = &meshes[k];
+      }
+      catch (const Error& e)
+      {
+        vtkWarningMacro(<< "body fit: " << e.what() << "; the frame is flagged failed");
+      }
+    }
+
+    BodyFitOptions options;
+    for (BodyFitStage& stage : options.stages)
+    {
+      stage.landmarkWeight *= this->LandmarkWeight;
+      stage.nearestWeight *= this->NearestWeight;
+      stage.insideWeight *= this->InsideWeight;
+    }
+    options.temporalWeight = this->TemporalWeight;
+    options.shapeFrames = this->ShapeFrames;
+    options.samples = this->Samples;
+    const BodyFitResult fit = fitBodySequence(model, frames, options,
+                                              [this](double progress)
+                                              {
+                                                this->UpdateProgress(0.95 * progress);
+                                                return !this->GetAbortExecute();
+                                              });
+
+    auto* bodies = vtkMultiBlockDataSet::GetData(outputVector, 0);
+    auto* landmarks = vtkMultiBlockDataSet::GetData(outputVector, 1);
+    vtkTable* table = vtkTable::GetData(outputVector, 2);
+    bodies->SetNumberOfBlocks(n);
+    landmarks->SetNumberOfBlocks(n);
+    vtkNew<vtkDoubleArray> beta;
+    beta->SetName("ShapeCoefficients");
+    for (Eigen::Index k = 0; k < fit.beta.size(); ++k) beta->InsertNextValue(fit.beta[k]);
+    bodies->GetFieldData()->AddArray(beta);
+
+    vtkNew<vtkIntArray> frameColumn, status, detected, matched;
+    frameColumn->SetName("Frame");
+    status->SetName("Status");
+    detected->SetName("ExtremitiesDetected");
+    matched->SetName("ExtremitiesMatched");
+    vtkNew<vtkDoubleArray> distance, inside, found;
+    distance->SetName("MedianDistance");
+    inside->SetName("InsideFraction");
+    found->SetName("LandmarksFound");
+    for (int k = 0; k < n; ++k)
+    {
+      const BodyFrameFit& f = fit.frames[k];
+      Points joints;
+      const TriangleMesh body = model.posed(fit.beta, f.pose, &joints);
+      vtkSmartPointer<vtkPolyData> bodyData = toPolyData(body);
+      addBodyModelArrays(model, joints, bodyData);
+      vtkFieldData* fd = bodyData->GetFieldData();
+      vtkNew<vtkIntArray> index, code;
+      index->SetName("FrameIndex");
+      index->InsertNextValue(k);
+      code->SetName("FitStatus");
+      code->InsertNextValue(static_cast<int>(f.status));
+      fd->AddArray(index);
+      fd->AddArray(code);
+      vtkNew<vtkDoubleArray> pose;
+      pose->SetName("Pose");
+      for (int j = 0; j < NumJoints; ++j)
+        for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.rotations(j, c));
+      for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.translation[c]);
+      fd->AddArray(pose);
+      addValue(fd, "MedianDistance", f.medianDistance);
+      addValue(fd, "InsideFraction", f.insideFraction);
+      bodies->SetBlock(k, bodyData);
+      bodies->GetMetaData(static_cast<unsigned>(k))
+          ->Set(vtkCompositeDataSet::NAME(), ("body_" + std::to_string(k)).c_str());
+
+      // Landmarks: none can be placed on a frame that failed.
+      const std::vector<OrientedPoint> points = orientedLandmarks(model, body);
+      std::vector<TransferredLandmark> transferred(points.size());
+      if (frames[k] && f.status != BodyFitStatus::Failed)
+      {
+        const SurfaceLocator locator(*frames[k]);
+        LandmarkTransferOptions transfer;
+        transfer.outsideTolerance = this->OutsideTolerance;
+        transfer.insideTolerance = this->InsideTolerance;
+        transferred = transferLandmarks(points, *frames[k], locator, transfer);
+      }
+      vtkSmartPointer<vtkPolyData> landmarkData =
+          transferredLandmarksToPolyData(points, transferred);
+      addLandmarkIdentity(model, landmarkData);
+      landmarks->SetBlock(k, landmarkData);
+      const double foundFraction =
+          landmarkData->GetFieldData()->GetArray("FoundFraction")->GetTuple1(0);
+
+      if (f.status != BodyFitStatus::Ok)
+        vtkWarningMacro(<< "body fit: " << frameName(sequence->GetBlock(k), k) << ": "
+                        << bodyFitStatusName(f.status) << (f.message.empty() ? "" : ": ")
+                        << f.message);
+      else if (foundFraction == 0.0)
+        vtkWarningMacro(<< "body fit: " << frameName(sequence->GetBlock(k), k)
+                        << ": no landmark could be placed");
+      frameColumn->InsertNextValue(k);
+      status->InsertNextValue(static_cast<int>(f.status));
+      detected->InsertNextValue(f.extremitiesDetected);
+      matched->InsertNextValue(f.extremitiesMatched);
+      distance->InsertNextValue(f.medianDistance);
+      inside->InsertNextValue(f.insideFraction);
+      found->InsertNextValue(foundFraction);
+      this->UpdateProgress(0.95 + 0.05 * (k + 1) / n);
+    }
+    for (vtkAbstractArray* column :
+         {static_cast<vtkAbstractArray*>(frameColumn), static_cast<vtkAbstractArray*>(status),
+          static_cast<vtkAbstractArray*>(distance), static_cast<vtkAbstractArray*>(inside),
+          static_cast<vtkAbstractArray*>(detected), static_cast<vtkAbstractArray*>(matched),
+          static_cast<vtkAbstractArray*>(found)})
+      table->AddColumn(column);
+  }
+  catch (const Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return 1;
+}
+
+void ctBodyFit::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LandmarkWeight: " << this->LandmarkWeight << "\n";
+  os << indent << "NearestWeight: " << this->NearestWeight << "\n";
+  os << indent << "InsideWeight: " << this->InsideWeight << "\n";
+  os << indent << "TemporalWeight: " << this->TemporalWeight << "\n";
+  os << indent << "ShapeFrames: " << this->ShapeFrames << "\n";
+  os << indent << "Samples: " << this->Samples << "\n";
+  os << indent << "OutsideTolerance: " << this->OutsideTolerance << "\n";
+  os << indent << "InsideTolerance: " << this->InsideTolerance << "\n";
+}

@@ -1,0 +1,97 @@
+/**
+ * @class ctBodyFit
+ * @brief Fits the body model under the clothing of a whole sequence and transfers its oriented
+ * anatomical landmarks onto every frame.
+ *
+ * Input port 0: the sequence as a vtkMultiBlockDataSet of vtkPolyData frames (output port 1 of
+ * ctMeshSequenceReader); frames need not share connectivity. Input port 1 (optional): a body
+ * model (ctBodyModelReader); the built-in model when absent.
+ *
+ * One shape beta for the sequence and a pose per frame minimise w_l E_l + w_n E_n + w_w E_w
+ * (automatically detected extremities, closest points, body inside the clothing) with a
+ * temporal term; see clothtrack/body/BodyFit.h for the terms and the weight schedule. The
+ * scales below multiply the schedule's weights.
+ *
+ * Output port 0: vtkMultiBlockDataSet, one fitted body per frame (the model's connectivity)
+ * with field data FrameIndex, FitStatus (0 ok, 1 poor, 2 failed), Pose (22 axis-angle joint
+ * rotations then the translation), MedianDistance and InsideFraction; the collection's field
+ * data holds ShapeCoefficients (beta).
+ * Output port 1: vtkMultiBlockDataSet, the oriented landmarks of each frame (as
+ * ctLandmarkTransfer: Valid, Direction, LandmarkId, LandmarkName, Offset, FrameFace,
+ * FrameBarycentric; field data FoundFraction).
+ * Output port 2: vtkTable, one row per frame: Frame, Status, MedianDistance, InsideFraction,
+ * ExtremitiesDetected, ExtremitiesMatched, LandmarksFound.
+ *
+ * A frame that cannot be fitted (empty or corrupt) is flagged Failed with a warning and keeps
+ * its neighbour's pose; the filter fails only when no frame can be fitted.
+ */
+#ifndef ctBodyFit_h
+#define ctBodyFit_h
+
+#include "ctFiltersModule.h"
+
+#include <vtkMultiBlockDataSetAlgorithm.h>
+
+class vtkTable;
+
+class CTFILTERS_EXPORT ctBodyFit : public vtkMultiBlockDataSetAlgorithm
+{
+public:
+  static ctBodyFit* New();
+  vtkTypeMacro(ctBodyFit, vtkMultiBlockDataSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Scale of the landmark term w_l over the whole schedule.
+  vtkSetClampMacro(LandmarkWeight, double, 0.0, 1000.0);
+  vtkGetMacro(LandmarkWeight, double);
+  /// Scale of the closest-point term w_n.
+  vtkSetClampMacro(NearestWeight, double, 0.0, 1000.0);
+  vtkGetMacro(NearestWeight, double);
+  /// Scale of the inside term w_w.
+  vtkSetClampMacro(InsideWeight, double, 0.0, 1000.0);
+  vtkGetMacro(InsideWeight, double);
+  /// Weight of joint rotation changes between consecutive frames.
+  vtkSetClampMacro(TemporalWeight, double, 0.0, 1000.0);
+  vtkGetMacro(TemporalWeight, double);
+  /// Key frames used to estimate the shape.
+  vtkSetClampMacro(ShapeFrames, int, 1, 1000);
+  vtkGetMacro(ShapeFrames, int);
+  /// Body vertices used by the dense terms.
+  vtkSetClampMacro(Samples, int, 50, 100000);
+  vtkGetMacro(Samples, int);
+  /// Landmark transfer: tau_o (metres).
+  vtkSetClampMacro(OutsideTolerance, double, 0.0, 10.0);
+  vtkGetMacro(OutsideTolerance, double);
+  /// Landmark transfer: tau_i (metres).
+  vtkSetClampMacro(InsideTolerance, double, 0.0, 10.0);
+  vtkGetMacro(InsideTolerance, double);
+
+  /// The body model (output of ctBodyModelReader) on input port 1.
+  void SetBodyModelConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+
+  vtkMultiBlockDataSet* GetLandmarksOutput();
+  vtkTable* GetStatusOutput();
+
+protected:
+  ctBodyFit();
+  ~ctBodyFit() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+                  vtkInformationVector* outputVector) override;
+
+  double LandmarkWeight = 1.0;
+  double NearestWeight = 1.0;
+  double InsideWeight = 1.0;
+  double TemporalWeight = 0.01;
+  int ShapeFrames = 8;
+  int Samples = 1000;
+  double OutsideTolerance = 0.05;
+  double InsideTolerance = 0.2;
+
+private:
+  ctBodyFit(const ctBodyFit&) = delete;
+  void operator=(const ctBodyFit&) = delete;
+};
+
+#endif

@@ -1,0 +1,79 @@
+#include "ctLandmarkPolyData.h"
+
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkStringArray.h>
+
+namespace clothtrack
+{
+vtkSmartPointer<vtkPolyData>
+transferredLandmarksToPolyData(const std::vector<OrientedPoint>& bodyPoints,
+                               const std::vector<TransferredLandmark>& transferred)
+{
+  vtkNew<vtkPoints> positions;
+  positions->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> verts;
+  vtkNew<vtkIntArray> valid, face;
+  valid->SetName("Valid");
+  face->SetName("FrameFace");
+  vtkNew<vtkDoubleArray> direction, bary, offset;
+  direction->SetName("Direction");
+  direction->SetNumberOfComponents(3);
+  bary->SetName("FrameBarycentric");
+  bary->SetNumberOfComponents(3);
+  offset->SetName("Offset");
+  int found = 0;
+  for (size_t k = 0; k < transferred.size(); ++k)
+  {
+    const TransferredLandmark& t = transferred[k];
+    found += t.valid;
+    const Vec3 p = t.valid ? t.point.position : bodyPoints[k].position;
+    verts->InsertNextCell(1);
+    verts->InsertCellPoint(positions->InsertNextPoint(p.data()));
+    valid->InsertNextValue(t.valid ? 1 : 0);
+    face->InsertNextValue(t.valid ? t.point.face : -1);
+    const Vec3 d = t.valid ? t.direction : bodyPoints[k].direction;
+    direction->InsertNextTuple(d.data());
+    bary->InsertNextTuple(t.point.bary.data());
+    offset->InsertNextValue(t.offset);
+  }
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->SetPoints(positions);
+  output->SetVerts(verts);
+  output->GetPointData()->AddArray(valid);
+  output->GetPointData()->AddArray(direction);
+  output->GetPointData()->SetActiveVectors("Direction");
+  output->GetPointData()->AddArray(offset);
+  output->GetPointData()->AddArray(face);
+  output->GetPointData()->AddArray(bary);
+  vtkNew<vtkDoubleArray> fraction;
+  fraction->SetName("FoundFraction");
+  fraction->InsertNextValue(transferred.empty() ? 0.0
+                                                : static_cast<double>(found) / transferred.size());
+  output->GetFieldData()->AddArray(fraction);
+  return output;
+}
+
+void addLandmarkIdentity(const BodyModel& model, vtkPolyData* landmarks)
+{
+  vtkNew<vtkIntArray> ids, vertexIds;
+  ids->SetName("LandmarkId");
+  vertexIds->SetName("VertexId");
+  vtkNew<vtkStringArray> names;
+  names->SetName("LandmarkName");
+  for (size_t k = 0; k < model.landmarks.size(); ++k)
+  {
+    ids->InsertNextValue(static_cast<int>(k));
+    vertexIds->InsertNextValue(model.landmarks[k].vertex);
+    names->InsertNextValue(model.landmarks[k].name);
+  }
+  landmarks->GetPointData()->AddArray(ids);
+  landmarks->GetPointData()->AddArray(vertexIds);
+  landmarks->GetPointData()->AddArray(names);
+}
+} // namespace clothtrack

@@ -1,0 +1,24 @@
+#ifndef ctLandmarkPolyData_h
+#define ctLandmarkPolyData_h
+// Oriented landmarks transferred onto a frame, as vtkPolyData: one vertex per body landmark
+// (on the frame when valid, at the body point when not) with point data Valid, Direction,
+// Offset, FrameFace, FrameBarycentric and field data FoundFraction. C++ only (not wrapped).
+#include "ctFiltersModule.h"
+
+#include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/body/BodyModel.h>
+
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+namespace clothtrack
+{
+CTFILTERS_EXPORT vtkSmartPointer<vtkPolyData>
+transferredLandmarksToPolyData(const std::vector<OrientedPoint>& bodyPoints,
+                               const std::vector<TransferredLandmark>& transferred);
+
+/// Adds LandmarkId, LandmarkName and VertexId (the model's landmark order) to `landmarks`.
+CTFILTERS_EXPORT void addLandmarkIdentity(const BodyModel& model, vtkPolyData* landmarks);
+} // namespace clothtrack
+
+#endif

@@ -1,0 +1,182 @@
+// Body fit under clothing: accuracy against the synthetic ground truth, automatic heading,
+// failed frames, and the VTK filter's outputs.
+#include "VtkTestUtil.h"
+
+#include "ctBodyFit.h"
+#include "ctBuiltinBodyModel.h"
+#include "ctCaptureSimulation.h"
+#include "ctMeshConversion.h"
+#include "ctSyntheticSequence.h"
+
+#include <clothtrack/Error.h>
+#include <clothtrack/body/BodyFit.h>
+
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPolyData.h>
+#include <vtkTable.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace clothtrack;
+
+namespace
+{
+struct Sequence
+{
+  Eigen::VectorXd beta;
+  std::vector<BodyPose> poses;
+  std::vector<TriangleMesh> captures;
+};
+
+/// A short dress-walk captured by the simulator (built once for all tests).
+const Sequence& dressWalk()
+{
+  static const Sequence sequence = []
+  {
+    Sequence s;
+    SyntheticOptions options;
+    options.preset = "dress-walk";
+    options.frames = 8;
+    s.beta = generateSyntheticSequence(builtinBodyModel(), options,
+                                       [&](const SyntheticFrame& frame)
+                                       {
+                                         s.poses.push_back(frame.pose);
+                                         s.captures.push_back(
+                                             simulateCapture(frame.clothed, CaptureOptions()));
+                                       });
+    return s;
+  }();
+  return sequence;
+}
+
+std::vector<const TriangleMesh*> pointers(const std::vector<TriangleMesh>& meshes)
+{
+  std::vector<const TriangleMesh*> out;
+  for (const auto& m : meshes) out.push_back(&m);
+  return out;
+}
+
+/// Mean joint and vertex distances (metres) between the fit and the truth, rotated by `turn`.
+void fitErrors(const BodyFitResult& fit, const Sequence& truth, const Eigen::Matrix3d& turn,
+               double& joints, double& surface)
+{
+  const BodyModel& model = builtinBodyModel();
+  joints = surface = 0.0;
+  for (size_t i = 0; i < truth.poses.size(); ++i)
+  {
+    Points fittedJoints, trueJoints;
+    const TriangleMesh fitted = model.posed(fit.beta, fit.frames[i].pose, &fittedJoints);
+    TriangleMesh body = model.posed(truth.beta, truth.poses[i], &trueJoints);
+    trueJoints = trueJoints * turn.transpose();
+    body.V = body.V * turn.transpose();
+    joints += (fittedJoints - trueJoints).rowwise().norm().mean() / truth.poses.size();
+    surface += (fitted.V - body.V).rowwise().norm().mean() / truth.poses.size();
+  }
+}
+} // namespace
+
+TEST(BodyFit, RecoversShapeAndPoseUnderADress)
+{
+  const Sequence& truth = dressWalk();
+  const BodyFitResult fit = fitBodySequence(builtinBodyModel(), pointers(truth.captures));
+  double joints, surface;
+  fitErrors(fit, truth, Eigen::Matrix3d::Identity(), joints, surface);
+  std::printf(
+      "[ measured ] dress-walk, 8 frames: joint error %.2f cm, body surface error %.2f cm\n",
+      100 * joints, 100 * surface);
+  EXPECT_LT(joints, 0.03);
+  EXPECT_LT(surface, 0.03);
+  for (const BodyFrameFit& f : fit.frames)
+  {
+    EXPECT_EQ(f.status, BodyFitStatus::Ok) << f.message;
+    EXPECT_GE(f.extremitiesMatched, 4);
+    EXPECT_GT(f.insideFraction, 0.9);
+  }
+}
+
+TEST(BodyFit, FindsAPersonFacingAwayWithoutHelp)
+{
+  // The same capture turned by 150 degrees about the vertical and moved: the automatic
+  // initialisation must find the heading.
+  const Sequence& truth = dressWalk();
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(150.0 * M_PI / 180.0, Vec3::UnitY()).matrix();
+  std::vector<TriangleMesh> turned = truth.captures;
+  for (auto& mesh : turned) mesh.V = mesh.V * turn.transpose();
+  const BodyFitResult fit = fitBodySequence(builtinBodyModel(), pointers(turned));
+  double joints, surface;
+  fitErrors(fit, truth, turn, joints, surface);
+  std::printf("[ measured ] dress-walk turned by 150 degrees: joint error %.2f cm\n", 100 * joints);
+  EXPECT_LT(joints, 0.03);
+}
+
+TEST(BodyFit, FlagsUnusableFramesAndFitsTheOthers)
+{
+  const Sequence& truth = dressWalk();
+  std::vector<const TriangleMesh*> frames = pointers(truth.captures);
+  frames.resize(4);
+  const TriangleMesh empty;
+  TriangleMesh corrupt = truth.captures[2];
+  corrupt.V(5, 1) = std::nan("");
+  frames[1] = &empty;
+  frames[2] = &corrupt;
+  BodyFitOptions options;
+  options.shapeFrames = 2;
+  const BodyFitResult fit = fitBodySequence(builtinBodyModel(), frames, options);
+  EXPECT_EQ(fit.frames[0].status, BodyFitStatus::Ok);
+  EXPECT_EQ(fit.frames[1].status, BodyFitStatus::Failed);
+  EXPECT_EQ(fit.frames[1].message, "empty frame");
+  EXPECT_EQ(fit.frames[2].status, BodyFitStatus::Failed);
+  EXPECT_NE(fit.frames[2].message.find("non-finite"), std::string::npos);
+  EXPECT_EQ(fit.frames[3].status, BodyFitStatus::Ok);
+  EXPECT_THROW(fitBodySequence(builtinBodyModel(), {&empty, &empty}), Error);
+}
+
+TEST(BodyFit, FilterOutputsBodiesLandmarksAndStatus)
+{
+  const Sequence& truth = dressWalk();
+  vtkNew<vtkMultiBlockDataSet> sequence;
+  sequence->SetNumberOfBlocks(4);
+  for (unsigned k = 0; k < 3; ++k) sequence->SetBlock(k, toPolyData(truth.captures[k]));
+  sequence->SetBlock(3, vtkNew<vtkPolyData>().GetPointer()); // an empty frame
+  vtkNew<ctBodyFit> fit;
+  fit->SetInputData(sequence);
+  fit->SetShapeFrames(2);
+  test::ErrorWatch watch(fit);
+  fit->Update();
+  EXPECT_NE(watch.message.find("frame 3"), std::string::npos) << watch.message;
+
+  auto* bodies = vtkMultiBlockDataSet::SafeDownCast(fit->GetOutputDataObject(0));
+  ASSERT_EQ(bodies->GetNumberOfBlocks(), 4u);
+  EXPECT_EQ(bodies->GetFieldData()->GetArray("ShapeCoefficients")->GetNumberOfTuples(),
+            builtinBodyModel().numShapeComponents());
+  auto* body = vtkPolyData::SafeDownCast(bodies->GetBlock(1));
+  ASSERT_NE(body, nullptr);
+  EXPECT_EQ(body->GetNumberOfPoints(), builtinBodyModel().numVertices());
+  EXPECT_EQ(body->GetFieldData()->GetArray("FitStatus")->GetTuple1(0), 0);
+  EXPECT_EQ(body->GetFieldData()->GetArray("Pose")->GetNumberOfTuples(), NumJoints * 3 + 3);
+
+  vtkMultiBlockDataSet* landmarks = fit->GetLandmarksOutput();
+  auto* marks = vtkPolyData::SafeDownCast(landmarks->GetBlock(1));
+  ASSERT_NE(marks, nullptr);
+  EXPECT_EQ(marks->GetNumberOfPoints(),
+            static_cast<vtkIdType>(builtinBodyModel().landmarks.size()));
+  EXPECT_GT(marks->GetFieldData()->GetArray("FoundFraction")->GetTuple1(0), 0.75);
+  auto* emptyMarks = vtkPolyData::SafeDownCast(landmarks->GetBlock(3));
+  EXPECT_EQ(emptyMarks->GetFieldData()->GetArray("FoundFraction")->GetTuple1(0), 0.0);
+
+  vtkTable* table = fit->GetStatusOutput();
+  ASSERT_EQ(table->GetNumberOfRows(), 4);
+  EXPECT_EQ(table->GetValueByName(0, "Status").ToInt(), 0);
+  EXPECT_EQ(table->GetValueByName(3, "Status").ToInt(), 2);
+
+  // No frame at all: an error, not a crash.
+  vtkNew<ctBodyFit> none;
+  none->SetInputData(vtkNew<vtkMultiBlockDataSet>().GetPointer());
+  test::ErrorWatch noneWatch(none);
+  none->Update();
+  EXPECT_NE(noneWatch.message.find("no frame"), std::string::npos);
+}
