@@ -9,7 +9,7 @@ import random
 import sys
 
 import clothtrack
-from clothtrack.rendering import offscreen_window, save_png
+from clothtrack.rendering import colour_actor, offscreen_window, save_png
 from vtkmodules.vtkFiltersSources import vtkArrowSource, vtkSphereSource
 from vtkmodules.vtkFiltersCore import vtkGlyph3D, vtkPolyDataNormals
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
@@ -55,13 +55,7 @@ for index, beta in enumerate(shapes):
         glyph.SetVectorModeToUseVector()
         glyph.SetScaleModeToDataScalingOff()
         glyph.SetScaleFactor(scale)
-        gm = vtkPolyDataMapper()
-        gm.SetInputConnection(glyph.GetOutputPort())
-        gm.ScalarVisibilityOff()
-        ga = vtkActor()
-        ga.SetMapper(gm)
-        ga.GetProperty().SetColor(*colour)
-        renderer.AddActor(ga)
+        renderer.AddActor(colour_actor(glyph.GetOutputPort(), colour))
 
 camera = renderer.GetActiveCamera()
 camera.SetFocalPoint(2.0, 0.9, 0)

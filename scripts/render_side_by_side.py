@@ -7,24 +7,15 @@ usage: PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 s
 import sys
 
 import clothtrack
-from clothtrack.rendering import offscreen_window, save_png
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
+from clothtrack.rendering import colour_actor, offscreen_window, save_png
+from vtkmodules.vtkRenderingCore import vtkRenderer
 
 out, meshes = sys.argv[1], sys.argv[2:]
 window = offscreen_window(420 * len(meshes), 640)
 colours = [(0.55, 0.75, 0.55), (0.85, 0.85, 0.85), (0.86, 0.72, 0.62), (0.6, 0.7, 0.9)]
 for index, path in enumerate(meshes):
     frame = clothtrack.read_sequence(path)[0]
-    normals = vtkPolyDataNormals()
-    normals.SetInputData(frame)
-    normals.SplittingOff()
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(normals.GetOutputPort())
-    mapper.ScalarVisibilityOff()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetColor(*colours[index % len(colours)])
+    actor = colour_actor(frame, colours[index % len(colours)], smooth_normals=True)
     renderer = vtkRenderer()
     renderer.SetViewport(index / len(meshes), 0, (index + 1) / len(meshes), 1)
     renderer.SetBackground(1, 1, 1)

@@ -8,6 +8,7 @@
 #include "Commands.h"
 #include "Options.h"
 #include "Progress.h"
+#include "TextFile.h"
 
 #include "ctBuiltinBodyModel.h"
 #include "ctCaptureSimulation.h"
@@ -20,22 +21,11 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 namespace fs = std::filesystem;
 
 namespace clothtrack::app
 {
-namespace
-{
-void writeAtomically(const fs::path& path, const std::string& text)
-{
-  const fs::path tmp = path.string() + ".part";
-  std::ofstream(tmp) << text;
-  fs::rename(tmp, path);
-}
-} // namespace
-
 int runSynth(const Args& args)
 {
   std::string output, presets;
@@ -115,15 +105,15 @@ int runSynth(const Args& args)
   std::string joints;
   for (int j = 0; j < NumJoints; ++j)
     joints += std::string(j ? ", " : "") + "\"" + jointNames()[j] + "\"";
-  writeAtomically(fs::path(output) / "body.json",
-                  "{\n  \"preset\": \"" + synth.preset + "\",\n  \"seed\": " +
-                      std::to_string(seed) + ",\n  \"fps\": " + std::to_string(synth.fps) +
-                      ",\n  \"frames\": " + std::to_string(synth.frames) +
-                      ",\n  \"voxel_size_m\": " + std::to_string(capture.voxelSize) +
-                      ",\n  \"garment_first_vertex\": " + std::to_string(garmentOffset) +
-                      ",\n  \"beta\": [" + betaText + "],\n  \"joints\": [" + joints +
-                      "],\n  \"poses\": [\n" + poses + "\n  ]\n}\n");
-  writeAtomically(fs::path(output) / "markers.csv", markers);
+  writeTextAtomically((fs::path(output) / "body.json").string(),
+                      "{\n  \"preset\": \"" + synth.preset + "\",\n  \"seed\": " +
+                          std::to_string(seed) + ",\n  \"fps\": " + std::to_string(synth.fps) +
+                          ",\n  \"frames\": " + std::to_string(synth.frames) +
+                          ",\n  \"voxel_size_m\": " + std::to_string(capture.voxelSize) +
+                          ",\n  \"garment_first_vertex\": " + std::to_string(garmentOffset) +
+                          ",\n  \"beta\": [" + betaText + "],\n  \"joints\": [" + joints +
+                          "],\n  \"poses\": [\n" + poses + "\n  ]\n}\n");
+  writeTextAtomically((fs::path(output) / "markers.csv").string(), markers);
   std::printf("wrote %d frames of '%s' to %s (frames/, ground_truth/, source_map/, body.json, "
               "markers.csv)\n",
               synth.frames, synth.preset.c_str(), output.c_str());

@@ -15,6 +15,7 @@ int runSimulateCapture(const Args& args);
 int runSynth(const Args& args);
 int runImportMakeHuman(const Args& args);
 int runSelectTemplate(const Args& args);
+int runBodyFit(const Args& args);
 
 /// Raised for a user error (bad option, bad path); main prints the message as one line.
 struct UsageError

@@ -24,6 +24,9 @@ const std::map<std::string, Command>& commands()
   static const std::map<std::string, Command> table = {
       {"inspect",
        {clothtrack::app::runInspect, "read a sequence and print per-frame geometry and topology"}},
+      {"body-fit",
+       {clothtrack::app::runBodyFit,
+        "fit the body model under the clothing and place its landmarks on every frame"}},
       {"select-template",
        {clothtrack::app::runSelectTemplate,
         "choose the template frame of a sequence (persistent splits, genus, area ratio)"}},
