@@ -62,16 +62,16 @@ void printStatus(const BodyFitResult& fit)
               100 * inside / fit.frames.size());
 }
 
-int synthetic(const std::string& preset, int numFrames)
+int synthetic(const std::string& preset, int numFrames, const BodyFitOptions& options)
 {
   const BodyModel& model = builtinBodyModel();
-  SyntheticOptions options;
-  options.preset = preset;
-  options.frames = numFrames;
+  SyntheticOptions synth;
+  synth.preset = preset;
+  synth.frames = numFrames;
   std::vector<SyntheticFrame> truth;
   std::vector<TriangleMesh> captures;
   const Eigen::VectorXd trueBeta = generateSyntheticSequence(
-      model, options,
+      model, synth,
       [&](const SyntheticFrame& frame)
       {
         truth.push_back(frame);
@@ -80,7 +80,7 @@ int synthetic(const std::string& preset, int numFrames)
   std::vector<const TriangleMesh*> frames;
   for (const auto& c : captures) frames.push_back(&c);
   const auto start = std::chrono::steady_clock::now();
-  const BodyFitResult fit = fitBodySequence(model, frames);
+  const BodyFitResult fit = fitBodySequence(model, frames, options);
   const double elapsed = seconds(start);
 
   double jointError = 0, surfaceError = 0, inside = 0, near = 0, trueNear = 0;
@@ -137,7 +137,7 @@ int synthetic(const std::string& preset, int numFrames)
   return 0;
 }
 
-int folder(const std::string& path, int stride)
+int folder(const std::string& path, int stride, const BodyFitOptions& options)
 {
   const BodyModel& model = builtinBodyModel();
   std::vector<TriangleMesh> meshes;
@@ -148,7 +148,7 @@ int folder(const std::string& path, int stride)
   std::vector<const TriangleMesh*> frames;
   for (const auto& m : used) frames.push_back(&m);
   const auto start = std::chrono::steady_clock::now();
-  const BodyFitResult fit = fitBodySequence(model, frames);
+  const BodyFitResult fit = fitBodySequence(model, frames, options);
   const double elapsed = seconds(start);
   double inside = 0, near = 0;
   LandmarkStats landmarks;
@@ -180,9 +180,20 @@ int main(int argc, char** argv)
   try
   {
     const std::string mode = argc > 1 ? argv[1] : "";
-    if (mode == "synthetic" && argc >= 4) return synthetic(argv[2], std::stoi(argv[3]));
-    if (mode == "folder" && argc >= 3) return folder(argv[2], argc > 3 ? std::stoi(argv[3]) : 1);
-    std::fprintf(stderr, "usage: bench_body_fit synthetic PRESET FRAMES | folder DIR [STRIDE]\n");
+    // Optional last argument: body samples of the dense terms.
+    BodyFitOptions options;
+    if (mode == "synthetic" && argc >= 4)
+    {
+      if (argc > 4) options.samples = std::stoi(argv[4]);
+      return synthetic(argv[2], std::stoi(argv[3]), options);
+    }
+    if (mode == "folder" && argc >= 3)
+    {
+      if (argc > 4) options.samples = std::stoi(argv[4]);
+      return folder(argv[2], argc > 3 ? std::stoi(argv[3]) : 1, options);
+    }
+    std::fprintf(stderr, "usage: bench_body_fit synthetic PRESET FRAMES [SAMPLES] | folder DIR "
+                         "[STRIDE [SAMPLES]]\n");
     return 1;
   }
   catch (const std::exception& e)

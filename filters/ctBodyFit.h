@@ -85,7 +85,7 @@ protected:
   double InsideWeight = 1.0;
   double TemporalWeight = 0.01;
   int ShapeFrames = 8;
-  int Samples = 1000;
+  int Samples = 600;
   double OutsideTolerance = 0.05;
   double InsideTolerance = 0.2;
 

@@ -10,6 +10,7 @@
 
 #include <clothtrack/Error.h>
 #include <clothtrack/body/BodyFit.h>
+#include <clothtrack/body/MakeHumanImport.h>
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -20,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 
 using namespace clothtrack;
 
@@ -179,4 +181,30 @@ TEST(BodyFit, FilterOutputsBodiesLandmarksAndStatus)
   test::ErrorWatch noneWatch(none);
   none->Update();
   EXPECT_NE(noneWatch.message.find("no frame"), std::string::npos);
+}
+
+TEST(BodyFit, WorksWithAMakeHumanModel)
+{
+  const std::string assets = std::string(CLOTHTRACK_SHARED_DATA) + "/makehuman";
+  if (!std::filesystem::exists(assets + "/base.obj"))
+    GTEST_SKIP() << "MakeHuman assets not found at " << assets << "; skipping";
+  MakeHumanImportOptions import;
+  import.populationSize = 60;
+  const BodyModel model = importMakeHuman(assets, import);
+  const Sequence& truth = dressWalk();
+  std::vector<const TriangleMesh*> frames = pointers(truth.captures);
+  frames.resize(4);
+  BodyFitOptions options;
+  options.shapeFrames = 2;
+  const BodyFitResult fit = fitBodySequence(model, frames, options);
+  // Another model: no vertex-wise truth, but the joints it shares with the truth must follow
+  // the person (the two skeletons differ by a few centimetres).
+  for (size_t i = 0; i < frames.size(); ++i)
+  {
+    EXPECT_EQ(fit.frames[i].status, BodyFitStatus::Ok) << fit.frames[i].message;
+    const Points fitted = model.posedJoints(fit.beta, fit.frames[i].pose);
+    const Points trueJoints = builtinBodyModel().posedJoints(truth.beta, truth.poses[i]);
+    for (int j : {Pelvis, Head, LeftWrist, RightWrist, LeftAnkle, RightAnkle})
+      EXPECT_LT((fitted.row(j) - trueJoints.row(j)).norm(), 0.12) << jointNames()[j];
+  }
 }

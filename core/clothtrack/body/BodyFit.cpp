@@ -477,20 +477,36 @@ public:
     return energy;
   }
 
-  /// Energy of a pose under the last stage's weights, for comparing initialisations.
+  /// How well a pose explains a frame, to compare fits from different starts: the mean
+  /// squared distance of the body samples to the frame, each capped at the last stage's search
+  /// radius (a sample with nothing near costs the cap, so a body off the frame cannot look
+  /// good), plus the inside and extremity terms with the last stage's weights.
   double score(const FrameSurface& frame, const BodyPose& pose) const
   {
     Points normals;
     const Points p = samples_.pose(pose, &normals);
     BodyFitStage last = options_.stages.back();
     last.landmarkWeight = std::max(last.landmarkWeight, 0.05);
-    const Assignments a = assign(frame, pose, p, normals, last, options_.extremityGate);
-    // Samples without a usable closest point count as far away.
-    int counted = 0;
-    for (const auto& r : a.planes) counted += !r.hinge;
-    const double missing = std::max(0, samples_.numSamples() - counted);
-    return a.energy(p) + last.nearestWeight * missing / samples_.numSamples() *
-                             options_.robustScale * options_.robustScale;
+    const double cap = last.searchRadius * last.searchRadius;
+    const int ns = samples_.numSamples();
+    std::vector<double> cost(ns, cap);
+    frame.hints.resize(std::max<size_t>(frame.hints.size(), ns), -1);
+    parallelFor(0, ns,
+                [&](int i)
+                {
+                  Vec3 target, normal;
+                  if (!frame.closest(i, p.row(i).transpose(), last.searchRadius, target, normal))
+                    return;
+                  const Vec3 diff = p.row(i).transpose() - target;
+                  const double outside = std::max(0.0, normal.dot(diff));
+                  cost[i] =
+                      std::min(diff.squaredNorm(), cap) + last.insideWeight * outside * outside;
+                });
+    double total = 0.0;
+    for (double c : cost) total += c;
+    last.nearestWeight = last.insideWeight = 0.0; // only the extremity rows below
+    const Assignments extremities = assign(frame, pose, p, normals, last, options_.extremityGate);
+    return total / ns + extremities.energy(p);
   }
 
   /// Tries every heading about the up axis, the body centred on the frame and moved rigidly;

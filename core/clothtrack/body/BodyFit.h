@@ -52,7 +52,7 @@ struct BodyFitOptions
   int shapeComponents = 16;       ///< leading components fitted (at most the model's)
   int shapeFrames = 8;            ///< key frames for the shape
   int shapeRounds = 3;            ///< alternations of shape and key-frame poses
-  int samples = 1000;             ///< body vertices used by the dense terms
+  int samples = 600;              ///< body vertices used by the dense terms
   double robustScale = 0.03;      ///< Cauchy scale of E_n, metres
   double extremityPersistence = 0.15; ///< metres
   double extremityGate =
