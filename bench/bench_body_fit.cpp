@@ -98,6 +98,14 @@ int synthetic(const std::string& preset, int numFrames, const BodyFitOptions& op
       (fittedJoints - trueJoints).rowwise().norm().maxCoeff(&worst);
       std::printf("frame %d: joint error %.2f cm (worst %s)\n", i, 100 * frameJointError,
                   jointNames()[worst]);
+      if (std::atoi(std::getenv("CLOTHTRACK_BENCH_VERBOSE")) > 1)
+        for (int j = 0; j < fittedJoints.rows(); ++j)
+          std::printf("  %-16s error %5.2f cm  fitted rotation %+.2f %+.2f %+.2f  true %+.2f %+.2f "
+                      "%+.2f\n",
+                      jointNames()[j], 100 * (fittedJoints.row(j) - trueJoints.row(j)).norm(),
+                      fit.frames[i].pose.rotations(j, 0), fit.frames[i].pose.rotations(j, 1),
+                      fit.frames[i].pose.rotations(j, 2), truth[i].pose.rotations(j, 0),
+                      truth[i].pose.rotations(j, 1), truth[i].pose.rotations(j, 2));
     }
     surfaceError += (fitted.V - body.V).rowwise().norm().mean();
     const SurfaceLocator captured(captures[i]);

@@ -45,6 +45,59 @@ int dominantJoint(const BodyModel& model, int vertex)
   return static_cast<int>(j);
 }
 
+/// Prior weight of each rotation parameter (x, y, z about the rest-pose axes; y is the twist
+/// of a limb pointing down). Joints get the stiffness of their anatomy: knees are hinges, hips
+/// bend forward far but barely twist; spine joints, clavicles, ankles and toes move little. Without
+/// that, legs inside wide trousers or a dress are free to cross, twist or splay, which fits the
+/// cloth as well as straight legs but is lost a few frames later.
+Eigen::VectorXd jointPriorWeights(const BodyFitOptions& options)
+{
+  Eigen::VectorXd w = Eigen::VectorXd::Constant(kPoseParameters, options.posePriorWeight);
+  auto stiffen = [&](int joint, double x, double y, double z)
+  {
+    w[3 * joint] *= x;
+    w[3 * joint + 1] *= y;
+    w[3 * joint + 2] *= z;
+  };
+  const double hinge = options.hingeStiffness;
+  for (int hip : {LeftHip, RightHip}) stiffen(hip, 1.0, 0.1 * hinge, 0.03 * hinge);
+  for (int knee : {LeftKnee, RightKnee}) stiffen(knee, 1.0, hinge, hinge);
+  for (int ankle : {LeftAnkle, RightAnkle}) stiffen(ankle, 1.0, 0.1 * hinge, 0.1 * hinge);
+  for (int toe : {LeftToe, RightToe}) stiffen(toe, 0.1 * hinge, 0.1 * hinge, 0.1 * hinge);
+  // Each spine joint bends a little; a large bend there trades against the pelvis tilting
+  // (under wide trousers a forward-tilted pelvis with a back-bent spine fits a squat too).
+  for (int spine : {Spine1, Spine2, Spine3}) stiffen(spine, 0.1 * hinge, 0.1 * hinge, 0.1 * hinge);
+  for (int clavicle : {LeftClavicle, RightClavicle})
+    stiffen(clavicle, 0.1 * hinge, 0.1 * hinge, 0.1 * hinge);
+  for (int wrist : {LeftWrist, RightWrist})
+    stiffen(wrist, 0.03 * hinge, 0.03 * hinge, 0.03 * hinge);
+  w.head<3>().setZero(); // the root turns freely
+  w.tail<3>().setZero(); // translation
+  return w;
+}
+
+/// Rotation parameters of the knees' bend, which is never negative (no knee bends backwards).
+constexpr std::array<int, 2> kHingeBends = {3 * LeftKnee, 3 * RightKnee};
+
+/// Angle of the body's facing direction about `up`.
+double heading(const BodyPose& pose, const Vec3& up)
+{
+  const Vec3 u = up.normalized();
+  const Vec3 facing = axisAngleToMatrix(pose.rotations.row(Pelvis).transpose()) * Vec3::UnitZ();
+  const Vec3 flat = facing - facing.dot(u) * u;
+  const Vec3 reference = (Vec3::UnitZ() - Vec3::UnitZ().dot(u) * u).norm() > 0.5
+                             ? Vec3(Vec3::UnitZ() - Vec3::UnitZ().dot(u) * u)
+                             : Vec3(Vec3::UnitX() - Vec3::UnitX().dot(u) * u);
+  return std::atan2(reference.cross(flat).dot(u), reference.dot(flat));
+}
+
+/// Absolute difference of two headings, in [0, pi].
+double headingChange(const BodyPose& a, const BodyPose& b, const Vec3& up)
+{
+  const double d = std::abs(std::remainder(heading(a, up) - heading(b, up), 2.0 * M_PI));
+  return d;
+}
+
 Eigen::VectorXd toVector(const BodyPose& pose)
 {
   Eigen::VectorXd x(kPoseParameters);
@@ -73,6 +126,20 @@ public:
     for (int v = 0; v < n; v += stride) vertices_.push_back(v);
     numSamples_ = static_cast<int>(vertices_.size());
     for (int v : bodyExtremityVertices(model)) vertices_.push_back(v);
+    // A detected foot tip may be the heel or the toe (a trouser hem or a dress changes which
+    // is further), so a foot is matched by its nearest point on the whole foot.
+    const std::array<std::vector<int>, kNumExtremities> regionJoints = {
+        {{}, {}, {}, {LeftToe, LeftAnkle}, {RightToe, RightAnkle}}};
+    for (int label = 0; label < kNumExtremities; ++label)
+    {
+      regions_[label] = {extremityPoint(label)};
+      for (int i = 0; i < numSamples_; ++i)
+      {
+        const int j = dominantJoint(model, vertices_[i]);
+        const auto& group = regionJoints[label];
+        if (std::find(group.begin(), group.end(), j) != group.end()) regions_[label].push_back(i);
+      }
+    }
     weights_.resize(vertices_.size());
     for (size_t i = 0; i < vertices_.size(); ++i)
       for (int j = 0; j < NumJoints; ++j)
@@ -88,6 +155,8 @@ public:
   int numSamples() const { return numSamples_; }
   int numPoints() const { return static_cast<int>(vertices_.size()); }
   int extremityPoint(int label) const { return numSamples_ + label; }
+  /// Points that may stand for an extremity: its tip, and for a foot the whole foot.
+  const std::vector<int>& extremityRegion(int label) const { return regions_[label]; }
   const Eigen::VectorXd& beta() const { return beta_; }
   int numComponents() const { return static_cast<int>(basis_.cols()); }
 
@@ -173,6 +242,7 @@ private:
   Eigen::VectorXd beta_;
   Points rest_, restNormals_, joints_;
   std::array<double, kNumExtremities> reach_{};
+  std::array<std::vector<int>, kNumExtremities> regions_;
 };
 
 /// A frame ready for closest-point queries, with its detected extremities.
@@ -337,11 +407,15 @@ class SequenceFitter
 {
 public:
   SequenceFitter(const BodyModel& model, const BodyFitOptions& options)
-      : options_(options), samples_(model, options.samples)
+      : options_(options), samples_(model, options.samples),
+        priorWeights_(jointPriorWeights(options))
   {
   }
 
   BodySamples& samples() { return samples_; }
+
+  /// Weight of the one-sided penalty on a knee bending backwards.
+  double limitWeight() const { return 10.0 * options_.hingeStiffness * options_.posePriorWeight; }
 
   /// Residuals of `pose` (whose sample points and normals are p and normals).
   Assignments assign(const FrameSurface& frame, const BodyPose& pose, const Points& p,
@@ -379,9 +453,16 @@ public:
       for (int label = 0; label < kNumExtremities; ++label)
         if (match[label] >= 0) ++a.matchedExtremities;
       for (int label = 0; label < kNumExtremities; ++label)
-        if (match[label] >= 0)
-          a.points.push_back({samples_.extremityPoint(label), frame.extremities[match[label]],
-                              stage.landmarkWeight / a.matchedExtremities});
+      {
+        if (match[label] < 0) continue;
+        const Vec3& target = frame.extremities[match[label]];
+        int nearest = samples_.extremityPoint(label);
+        for (int i : samples_.extremityRegion(label))
+          if ((p.row(i).transpose() - target).squaredNorm() <
+              (p.row(nearest).transpose() - target).squaredNorm())
+            nearest = i;
+        a.points.push_back({nearest, target, stage.landmarkWeight / a.matchedExtremities});
+      }
     }
     return a;
   }
@@ -389,7 +470,8 @@ public:
   double regulariser(const Eigen::VectorXd& x, const Eigen::VectorXd* previous) const
   {
     double e = 0.0;
-    for (int k = 3; k < NumJoints * 3; ++k) e += options_.posePriorWeight * x[k] * x[k];
+    for (int k = 3; k < NumJoints * 3; ++k) e += priorWeights_[k] * x[k] * x[k];
+    for (int k : kHingeBends) e += limitWeight() * std::pow(std::min(0.0, x[k]), 2);
     if (previous)
       for (int k = 0; k < NumJoints * 3; ++k)
         e += options_.temporalWeight * std::pow(x[k] - (*previous)[k], 2);
@@ -437,8 +519,14 @@ public:
         {
           if (k >= 3)
           {
-            h(k, k) += options_.posePriorWeight;
-            g[k] += options_.posePriorWeight * x[k];
+            h(k, k) += priorWeights_[k];
+            g[k] += priorWeights_[k] * x[k];
+          }
+          if (std::find(kHingeBends.begin(), kHingeBends.end(), k) != kHingeBends.end() &&
+              x[k] < 0.0)
+          {
+            h(k, k) += limitWeight();
+            g[k] += limitWeight() * x[k];
           }
           if (prevPtr)
           {
@@ -596,9 +684,11 @@ public:
     measure(frame, fit);
     if (fit.status == BodyFitStatus::Ok) return;
     const BodyFrameFit retry = initialFit(frame);
-    // A fresh start must be clearly better: a body turned the other way round can fit a wide
-    // garment almost as well, and a person cannot turn round between two frames.
+    // A fresh start must be clearly better and face roughly the same way: a body turned the
+    // other way round can fit a wide garment almost as well, and a person cannot turn round
+    // between two frames.
     if (retry.status == BodyFitStatus::Ok &&
+        headingChange(retry.pose, init, options_.up) < 0.5 * M_PI &&
         score(frame, retry.pose) < 0.5 * score(frame, fit.pose))
     {
       fit.pose = retry.pose;
@@ -677,6 +767,7 @@ public:
 private:
   const BodyFitOptions& options_;
   BodySamples samples_;
+  Eigen::VectorXd priorWeights_; ///< per rotation parameter
 };
 
 std::string frameProblem(const TriangleMesh* frame)

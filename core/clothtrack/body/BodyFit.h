@@ -46,15 +46,18 @@ struct BodyFitOptions
 {
   std::vector<BodyFitStage> stages = {
       {1.0, 0.1, 0.0, 6, 0.4}, {0.5, 1.0, 1.0, 8, 0.15}, {0.2, 1.0, 4.0, 8, 0.1}};
-  double temporalWeight = 0.01;   ///< on joint rotation changes from the previous frame (1/rad^2)
-  double posePriorWeight = 0.002; ///< on joint rotations (root excluded)
-  double shapePriorWeight = 2e-5; ///< on beta
-  int shapeComponents = 16;       ///< leading components fitted (at most the model's)
-  int shapeFrames = 8;            ///< key frames for the shape
-  int shapeRounds = 3;            ///< alternations of shape and key-frame poses
-  int samples = 600;              ///< body vertices used by the dense terms
-  double robustScale = 0.03;      ///< Cauchy scale of E_n, metres
-  double extremityPersistence = 0.15; ///< metres
+  double temporalWeight = 0.01;    ///< on joint rotation changes from the previous frame (1/rad^2)
+  double posePriorWeight = 0.0002; ///< on joint rotations (root excluded)
+  /// Prior multiplier on rotations a joint barely makes (a knee's sideways bend; fractions of it
+  /// on hip twist, ankle, toe, clavicle and wrist rotations)
+  double hingeStiffness = 100.0;
+  double shapePriorWeight = 2e-5;     ///< on beta
+  int shapeComponents = 16;           ///< leading components fitted (at most the model's)
+  int shapeFrames = 8;                ///< key frames for the shape
+  int shapeRounds = 3;                ///< alternations of shape and key-frame poses
+  int samples = 600;                  ///< body vertices used by the dense terms
+  double robustScale = 0.03;          ///< Cauchy scale of E_n, metres
+  double extremityPersistence = 0.13; ///< metres
   double extremityGate =
       0.35; ///< head and toes: detected and body extremities further apart are not paired
   double handGate = 0.8;         ///< the same for the hands, which move fastest and furthest
