@@ -2,6 +2,7 @@
 
 #include "ctBodyModelIO.h"
 #include "ctBuiltinBodyModel.h"
+#include "ctFrameName.h"
 #include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
 
@@ -28,16 +29,6 @@ vtkStandardNewMacro(ctBodyFit);
 
 namespace
 {
-/// "frame K (file)" when the reader recorded the source file.
-std::string frameName(vtkDataObject* block, int k)
-{
-  std::string name = "frame " + std::to_string(k);
-  if (block)
-    if (auto* files =
-            vtkStringArray::SafeDownCast(block->GetFieldData()->GetAbstractArray("SourceFile")))
-      if (files->GetNumberOfValues() > 0) name += " (" + files->GetValue(0) + ")";
-  return name;
-}
 
 void addValue(vtkFieldData* data, const char* name, double value)
 {

@@ -1,5 +1,7 @@
 #include "ctLandmarkPolyData.h"
 
+#include <clothtrack/Error.h>
+
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -75,5 +77,42 @@ void addLandmarkIdentity(const BodyModel& model, vtkPolyData* landmarks)
   landmarks->GetPointData()->AddArray(ids);
   landmarks->GetPointData()->AddArray(vertexIds);
   landmarks->GetPointData()->AddArray(names);
+}
+
+std::vector<OrientedSurfacePoint> landmarkSurfacePoints(vtkPolyData* landmarks, int numFaces,
+                                                        const std::string& name)
+{
+  std::vector<OrientedSurfacePoint> out;
+  if (!landmarks || landmarks->GetNumberOfPoints() == 0) return out;
+  vtkPointData* pd = landmarks->GetPointData();
+  vtkDataArray* valid = pd->GetArray("Valid");
+  vtkDataArray* face = pd->GetArray("FrameFace");
+  vtkDataArray* bary = pd->GetArray("FrameBarycentric");
+  vtkDataArray* direction = pd->GetArray("Direction");
+  vtkDataArray* ids = pd->GetArray("LandmarkId");
+  if (!valid || !face || !bary || !direction || bary->GetNumberOfComponents() != 3 ||
+      direction->GetNumberOfComponents() != 3)
+    throw Error(name + ": landmarks need point arrays Valid, FrameFace, FrameBarycentric (3) and "
+                       "Direction (3), as ctBodyFit and ctLandmarkTransfer write them");
+  for (vtkIdType i = 0; i < landmarks->GetNumberOfPoints(); ++i)
+  {
+    if (valid->GetTuple1(i) == 0) continue;
+    OrientedSurfacePoint p;
+    p.id = ids ? static_cast<int>(ids->GetTuple1(i)) : static_cast<int>(i);
+    p.face = static_cast<int>(face->GetTuple1(i));
+    if (p.face < 0 || p.face >= numFaces)
+      throw Error(name + ": landmark " + std::to_string(p.id) + " lies on face " +
+                  std::to_string(p.face) + ", but the frame has " + std::to_string(numFaces) +
+                  " faces (landmarks of another frame?)");
+    double t[3];
+    bary->GetTuple(i, t);
+    p.bary = Vec3(t[0], t[1], t[2]);
+    direction->GetTuple(i, t);
+    p.direction = Vec3(t[0], t[1], t[2]);
+    if (!p.bary.allFinite() || !p.direction.allFinite())
+      throw Error(name + ": landmark " + std::to_string(p.id) + " has non-finite values");
+    out.push_back(p);
+  }
+  return out;
 }
 } // namespace clothtrack

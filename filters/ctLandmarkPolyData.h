@@ -6,6 +6,7 @@
 #include "ctFiltersModule.h"
 
 #include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/PatchCorrespondence.h>
 #include <clothtrack/body/BodyModel.h>
 
 #include <vtkPolyData.h>
@@ -17,6 +18,11 @@ CTFILTERS_EXPORT vtkSmartPointer<vtkPolyData>
 transferredLandmarksToPolyData(const std::vector<OrientedPoint>& bodyPoints,
                                const std::vector<TransferredLandmark>& transferred);
 
+/// The valid landmarks of such a polydata as surface points (id from LandmarkId, else the point
+/// index). Throws Error naming `name` when Valid, FrameFace, FrameBarycentric or Direction is
+/// missing or a face is outside [0, numFaces).
+CTFILTERS_EXPORT std::vector<OrientedSurfacePoint>
+landmarkSurfacePoints(vtkPolyData* landmarks, int numFaces, const std::string& name);
 /// Adds LandmarkId, LandmarkName and VertexId (the model's landmark order) to `landmarks`.
 CTFILTERS_EXPORT void addLandmarkIdentity(const BodyModel& model, vtkPolyData* landmarks);
 } // namespace clothtrack

@@ -24,14 +24,25 @@ Eigen::Matrix3d minimalRotation(const Vec3& a, const Vec3& b)
 }
 } // namespace
 
+ExponentialMapper::ExponentialMapper(const TriangleMesh& mesh)
+    : mesh_(mesh), normals_(vertexNormals(mesh)), topology_(buildTopology(mesh)), geodesic_(mesh)
+{
+}
+
 PolarPatch exponentialMap(const TriangleMesh& mesh, int face, const Vec3& bary,
                           const Vec3& direction, double radius)
 {
+  return ExponentialMapper(mesh).map(face, bary, direction, radius);
+}
+
+PolarPatch ExponentialMapper::map(int face, const Vec3& bary, const Vec3& direction,
+                                  double radius) const
+{
+  const TriangleMesh& mesh = mesh_;
   if (face < 0 || face >= mesh.numFaces())
     throw Error("exponential map: seed face " + std::to_string(face) + " out of range");
-  const Points normals = vertexNormals(mesh);
-  const MeshTopology topo = buildTopology(mesh);
-
+  const Points& normals = normals_;
+  const MeshTopology& topo = topology_;
   // Seed frame: the triangle's normal, x along the projected direction.
   const Vec3 a = mesh.vertex(mesh.F(face, 0)), b = mesh.vertex(mesh.F(face, 1)),
              c = mesh.vertex(mesh.F(face, 2));
@@ -44,9 +55,9 @@ PolarPatch exponentialMap(const TriangleMesh& mesh, int face, const Vec3& bary,
     throw Error("exponential map: the seed direction is normal to the surface");
   x0.normalize();
 
-  WavefrontGeodesic geodesic(mesh);
-  geodesic.distancesFromSeeds(seedsAtSurfacePoint(mesh, face, bary), radius);
-  const std::vector<int>& order = geodesic.lastReached();
+  std::vector<int> order;
+  const Eigen::VectorXd distance =
+      geodesic_.distancesFromSeeds(seedsAtSurfacePoint(mesh, face, bary), radius, order);
 
   const int n = mesh.numVertices();
   std::vector<Eigen::Vector2d> uv(n, Eigen::Vector2d::Zero());
@@ -96,6 +107,7 @@ PolarPatch exponentialMap(const TriangleMesh& mesh, int face, const Vec3& bary,
     placed[v] = 1;
     patch.vertices.push_back(v);
     patch.coordinates.push_back(uv[v]);
+    patch.distances.push_back(distance[v]);
   }
   return patch;
 }

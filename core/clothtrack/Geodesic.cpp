@@ -60,6 +60,12 @@ double WavefrontGeodesic::triangleUpdate(int a, int b, int c, const Eigen::Vecto
 Eigen::VectorXd WavefrontGeodesic::distancesFromSeeds(const std::vector<GeodesicSeed>& seeds,
                                                       double limit) const
 {
+  return distancesFromSeeds(seeds, limit, reached_);
+}
+
+Eigen::VectorXd WavefrontGeodesic::distancesFromSeeds(const std::vector<GeodesicSeed>& seeds,
+                                                      double limit, std::vector<int>& reached) const
+{
   const int n = mesh_.numVertices();
   Eigen::VectorXd d = Eigen::VectorXd::Constant(n, kUnreached);
   std::vector<char> done(n, 0);
@@ -76,7 +82,7 @@ Eigen::VectorXd WavefrontGeodesic::distancesFromSeeds(const std::vector<Geodesic
       queue.emplace(s.distance, s.vertex);
     }
   }
-  reached_.clear();
+  reached.clear();
   auto relax = [&](int v, double candidate)
   {
     if (candidate < d[v])
@@ -92,7 +98,7 @@ Eigen::VectorXd WavefrontGeodesic::distancesFromSeeds(const std::vector<Geodesic
     if (done[v] || dist > d[v]) continue;
     if (dist > limit) break;
     done[v] = 1;
-    reached_.push_back(v);
+    reached.push_back(v);
     const Vec3 pv = mesh_.vertex(v);
     for (const int* w = topology_.vertexVertices.begin(v); w != topology_.vertexVertices.end(v);
          ++w)

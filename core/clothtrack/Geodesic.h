@@ -43,6 +43,10 @@ public:
   /// Distance to the nearest seed; kUnreached beyond `limit` and on parts with no seed.
   Eigen::VectorXd distancesFromSeeds(const std::vector<GeodesicSeed>& seeds,
                                      double limit = kUnreached) const;
+  /// The same, safe to call from several threads at once: the vertices reached, nearest
+  /// first, go to `reached` instead of lastReached().
+  Eigen::VectorXd distancesFromSeeds(const std::vector<GeodesicSeed>& seeds, double limit,
+                                     std::vector<int>& reached) const;
   Eigen::VectorXd distances(const std::vector<int>& sources, double limit = kUnreached) const;
 
   /// Vertices reached by the last call, in the order they were finalised (nearest first).

@@ -1,0 +1,219 @@
+// Dense correspondence (geodesic patches) against ground truth, beside the rigid + nearest
+// neighbour baseline.
+//   bench_correspondence synthetic PRESET FRAMES [true]   synthetic captures; landmarks from the
+//                                                         fitted body (or the true body: "true")
+//   bench_correspondence remesh DIR [STRIDE]              a consistent-connectivity sequence
+//                                                         (e.g. samba) re-meshed by the capture
+//                                                         simulator; landmarks from the fitted body
+// CLOTHTRACK_EPSILON overrides the near-isometry tolerance eps (metres).
+// The template frame is chosen automatically. Error of a template vertex t in frame k: distance
+// from f(t) to the ground-truth position of t's source point (the true surface point the
+// template vertex was captured from) in frame k.
+#include "ctBuiltinBodyModel.h"
+#include "ctCaptureSimulation.h"
+#include "ctMeshConversion.h"
+#include "ctSyntheticSequence.h"
+
+#include <clothtrack/Error.h>
+#include <clothtrack/FrameList.h>
+#include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/Parallel.h>
+#include <clothtrack/PatchCorrespondence.h>
+#include <clothtrack/TemplateSelection.h>
+#include <clothtrack/body/BodyFit.h>
+#include <clothtrack/body/OrientedLandmarks.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+using namespace clothtrack;
+
+namespace
+{
+double seconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+struct Sequence
+{
+  std::vector<TriangleMesh> truth;    ///< consistent connectivity
+  std::vector<TriangleMesh> captures; ///< independent meshes
+  std::vector<SourceMap> sources;     ///< capture vertex -> truth surface point
+  std::vector<std::vector<OrientedSurfacePoint>> landmarks;
+};
+
+std::vector<OrientedSurfacePoint> toSurfacePoints(const std::vector<TransferredLandmark>& t)
+{
+  std::vector<OrientedSurfacePoint> out;
+  for (size_t k = 0; k < t.size(); ++k)
+    if (t[k].valid)
+      out.push_back({static_cast<int>(k), t[k].point.face, t[k].point.bary, t[k].direction});
+  return out;
+}
+
+void fittedLandmarks(Sequence& s)
+{
+  const BodyModel& model = builtinBodyModel();
+  std::vector<const TriangleMesh*> frames;
+  for (const auto& c : s.captures) frames.push_back(&c);
+  const auto start = std::chrono::steady_clock::now();
+  const BodyFitResult fit = fitBodySequence(model, frames);
+  std::printf("body fit: %.1f s\n", seconds(start));
+  for (size_t k = 0; k < s.captures.size(); ++k)
+  {
+    const TriangleMesh body = model.posed(fit.beta, fit.frames[k].pose);
+    const SurfaceLocator locator(s.captures[k]);
+    s.landmarks.push_back(
+        toSurfacePoints(transferLandmarks(orientedLandmarks(model, body), s.captures[k], locator)));
+  }
+}
+
+struct Stats
+{
+  std::vector<double> errors;
+  long long vertices = 0;
+  double time = 0.0;
+  void print(const char* name) const
+  {
+    std::vector<double> e = errors;
+    double mean = 0.0;
+    int far = 0;
+    for (double x : e) mean += x, far += x > 0.10;
+    mean /= std::max<size_t>(1, e.size());
+    double p90 = 0.0;
+    if (!e.empty())
+    {
+      std::nth_element(e.begin(), e.begin() + e.size() * 9 / 10, e.end());
+      p90 = e[e.size() * 9 / 10];
+    }
+    std::printf("| %s | %.2f cm | %.2f cm | %.1f %% | %.1f %% | %.2f s |\n", name, 100 * mean,
+                100 * p90, 100.0 * e.size() / std::max(1LL, vertices),
+                100.0 * far / std::max<size_t>(1, e.size()), time);
+  }
+};
+
+int evaluate(Sequence& s)
+{
+  std::vector<FrameTopology> topology;
+  for (const auto& c : s.captures) topology.push_back(frameTopology(c, 0.1));
+  const int j = selectTemplate(topology, {}).chosen;
+  const TriangleMesh& templ = s.captures[j];
+  std::printf("template frame %d: %d vertices, %zu landmarks; %d threads\n", j, templ.numVertices(),
+              s.landmarks[j].size(), threadCount());
+  auto start = std::chrono::steady_clock::now();
+  PatchCorrespondenceOptions options;
+  if (const char* eps = std::getenv("CLOTHTRACK_EPSILON")) options.epsilon = std::atof(eps);
+  const TemplatePatches patches(templ, s.landmarks[j], options);
+  std::printf("eps %.3f m, tau_s %.2f m, tau_d %.2f m\n", options.epsilon, options.minRadius,
+              options.maxRadius);
+  std::printf("template preparation %.2f s\n", seconds(start));
+  // Ground truth of each template vertex: its source point on the truth of frame j.
+  const SourceMap& source = s.sources[j];
+  Stats geodesic, baseline;
+  double kept = 0, tried = 0;
+  for (size_t k = 0; k < s.captures.size(); ++k)
+  {
+    if (static_cast<int>(k) == j) continue;
+    start = std::chrono::steady_clock::now();
+    const FrameCorrespondence c = patches.correspond(s.captures[k], s.landmarks[k]);
+    geodesic.time += seconds(start);
+    start = std::chrono::steady_clock::now();
+    const FrameCorrespondence b =
+        rigidNearestCorrespondence(templ, s.landmarks[j], s.captures[k], s.landmarks[k]);
+    baseline.time += seconds(start);
+    for (const auto& p : c.patches) kept += p.kept, tried += 1;
+    for (int v = 0; v < templ.numVertices(); ++v)
+    {
+      const Vec3 truth = surfacePosition(s.truth[k], source.face[v], source.barycentric[v]);
+      ++geodesic.vertices;
+      ++baseline.vertices;
+      if (c.vertices[v].matched())
+        geodesic.errors.push_back((c.vertices[v].position - truth).norm());
+      if (b.vertices[v].matched())
+        baseline.errors.push_back((b.vertices[v].position - truth).norm());
+    }
+  }
+  const double frames = static_cast<double>(s.captures.size() - 1);
+  geodesic.time /= frames;
+  baseline.time /= frames;
+  std::printf("patches kept %.1f %% of the landmark pairs\n", 100 * kept / std::max(1.0, tried));
+  std::printf("| method | mean error | p90 error | matched | off > 10 cm | time/frame |\n");
+  geodesic.print("geodesic patches");
+  baseline.print("rigid + nearest");
+  return 0;
+}
+
+int synthetic(const std::string& preset, int numFrames, bool trueLandmarks)
+{
+  const BodyModel& model = builtinBodyModel();
+  SyntheticOptions options;
+  options.preset = preset;
+  options.frames = numFrames;
+  Sequence s;
+  std::vector<TriangleMesh> bodies;
+  generateSyntheticSequence(model, options,
+                            [&](const SyntheticFrame& frame)
+                            {
+                              s.truth.push_back(frame.clothed);
+                              bodies.push_back(frame.body);
+                              SourceMap map;
+                              CaptureOptions capture;
+                              capture.seed = 1 + frame.index;
+                              s.captures.push_back(simulateCapture(frame.clothed, capture, &map));
+                              s.sources.push_back(std::move(map));
+                            });
+  if (trueLandmarks)
+    for (size_t k = 0; k < s.captures.size(); ++k)
+    {
+      const SurfaceLocator locator(s.captures[k]);
+      s.landmarks.push_back(toSurfacePoints(
+          transferLandmarks(orientedLandmarks(model, bodies[k]), s.captures[k], locator)));
+    }
+  else
+    fittedLandmarks(s);
+  std::printf("preset %s, %d frames, landmarks from the %s body\n", preset.c_str(), numFrames,
+              trueLandmarks ? "true" : "fitted");
+  return evaluate(s);
+}
+
+int remesh(const std::string& path, int stride)
+{
+  Sequence s;
+  const auto files = listFrames(path);
+  for (size_t i = 0; i < files.size(); i += stride)
+  {
+    s.truth.push_back(loadFrame(files[i], FrameConventions()));
+    SourceMap map;
+    CaptureOptions capture;
+    capture.seed = 1 + static_cast<unsigned>(i);
+    s.captures.push_back(simulateCapture(s.truth.back(), capture, &map));
+    s.sources.push_back(std::move(map));
+  }
+  std::printf("%s re-meshed: %zu frames (stride %d)\n", path.c_str(), s.captures.size(), stride);
+  fittedLandmarks(s);
+  return evaluate(s);
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "synthetic" && argc >= 4)
+      return synthetic(argv[2], std::stoi(argv[3]), argc > 4 && std::string(argv[4]) == "true");
+    if (mode == "remesh" && argc >= 3) return remesh(argv[2], argc > 3 ? std::stoi(argv[3]) : 1);
+    std::fprintf(stderr, "usage: bench_correspondence synthetic PRESET FRAMES [true] | remesh DIR "
+                         "[STRIDE]\n");
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    std::fprintf(stderr, "bench_correspondence: %s\n", e.what());
+    return 1;
+  }
+}

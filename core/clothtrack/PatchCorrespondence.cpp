@@ -1,0 +1,461 @@
+#include "PatchCorrespondence.h"
+
+#include "Error.h"
+#include "Geodesic.h"
+#include "Parallel.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <unordered_map>
+
+namespace clothtrack
+{
+Vec3 surfacePosition(const TriangleMesh& mesh, int face, const Vec3& bary)
+{
+  return bary[0] * mesh.vertex(mesh.F(face, 0)) + bary[1] * mesh.vertex(mesh.F(face, 1)) +
+         bary[2] * mesh.vertex(mesh.F(face, 2));
+}
+
+double FrameCorrespondence::matchedFraction() const
+{
+  if (vertices.empty()) return 0.0;
+  int matched = 0;
+  for (const auto& v : vertices) matched += v.matched();
+  return static_cast<double>(matched) / vertices.size();
+}
+
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+void checkLandmark(const TriangleMesh& mesh, const OrientedSurfacePoint& l, const char* where)
+{
+  if (l.face < 0 || l.face >= mesh.numFaces())
+    throw Error(std::string("patch correspondence: ") + where + " landmark " +
+                std::to_string(l.id) + " lies on face " + std::to_string(l.face) +
+                ", out of range");
+  if (!l.direction.allFinite() || !l.bary.allFinite())
+    throw Error(std::string("patch correspondence: ") + where + " landmark " +
+                std::to_string(l.id) + " has a non-finite direction or barycentric");
+}
+
+/// Geodesic distance at a surface point, interpolated from vertex distances.
+double distanceAt(const TriangleMesh& mesh, const Eigen::VectorXd& d, int face, const Vec3& bary)
+{
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double dk = d[mesh.F(face, k)];
+    if (!std::isfinite(dk)) return kInf;
+    sum += bary[k] * dk;
+  }
+  return sum;
+}
+
+/// Point location in a polar chart: the chart's triangles laid out in the plane, bucketed in a
+/// uniform grid.
+class ChartLocator
+{
+public:
+  ChartLocator(const TriangleMesh& mesh, const MeshTopology& topology, const PolarPatch& chart)
+  {
+    for (size_t k = 0; k < chart.vertices.size(); ++k) local_[chart.vertices[k]] = k;
+    uv_ = chart.coordinates;
+    distance_ = chart.distances;
+    // Faces with all three corners in the chart.
+    std::vector<int> seen;
+    for (int v : chart.vertices)
+      for (const int* f = topology.vertexFaces.begin(v); f != topology.vertexFaces.end(v); ++f)
+        seen.push_back(*f);
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    double edge = 0.0;
+    for (int f : seen)
+    {
+      std::array<int, 3> c;
+      bool inside = true;
+      for (int k = 0; k < 3 && inside; ++k)
+      {
+        const auto it = local_.find(mesh.F(f, k));
+        inside = it != local_.end();
+        if (inside) c[k] = static_cast<int>(it->second);
+      }
+      if (!inside) continue;
+      faces_.push_back(f);
+      corners_.push_back(c);
+      edge += (uv_[c[1]] - uv_[c[0]]).norm();
+    }
+    if (faces_.empty()) return;
+    lo_ = hi_ = uv_[corners_[0][0]];
+    for (const auto& c : corners_)
+      for (int k = 0; k < 3; ++k)
+      {
+        lo_ = lo_.cwiseMin(uv_[c[k]]);
+        hi_ = hi_.cwiseMax(uv_[c[k]]);
+      }
+    cell_ = std::max(1e-6, 2.0 * edge / faces_.size());
+    nx_ = std::max(1, std::min(512, static_cast<int>((hi_.x() - lo_.x()) / cell_) + 1));
+    ny_ = std::max(1, std::min(512, static_cast<int>((hi_.y() - lo_.y()) / cell_) + 1));
+    cells_.assign(static_cast<size_t>(nx_) * ny_, {});
+    for (size_t t = 0; t < corners_.size(); ++t)
+    {
+      Eigen::Vector2d a = uv_[corners_[t][0]], b = a;
+      for (int k = 1; k < 3; ++k)
+      {
+        a = a.cwiseMin(uv_[corners_[t][k]]);
+        b = b.cwiseMax(uv_[corners_[t][k]]);
+      }
+      const auto [x0, y0] = cellOf(a);
+      const auto [x1, y1] = cellOf(b);
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) cells_[static_cast<size_t>(y) * nx_ + x].push_back(t);
+    }
+  }
+
+  /// The chart triangle containing `uv`; where the chart folds over itself, the one whose
+  /// geodesic distance from the seed is closest to `radius`. False outside the chart.
+  bool locate(const Eigen::Vector2d& uv, double radius, int& face, Vec3& bary) const
+  {
+    if (faces_.empty()) return false;
+    const auto [x, y] = cellOf(uv);
+    if (uv.x() < lo_.x() || uv.y() < lo_.y() || uv.x() > hi_.x() || uv.y() > hi_.y()) return false;
+    double best = kInf;
+    for (int t : cells_[static_cast<size_t>(y) * nx_ + x])
+    {
+      const auto& c = corners_[t];
+      const Eigen::Vector2d a = uv_[c[0]], e1 = uv_[c[1]] - a, e2 = uv_[c[2]] - a, q = uv - a;
+      const double det = e1.x() * e2.y() - e1.y() * e2.x();
+      if (std::abs(det) < 1e-18) continue;
+      const double l1 = (q.x() * e2.y() - q.y() * e2.x()) / det;
+      const double l2 = (e1.x() * q.y() - e1.y() * q.x()) / det;
+      const double l0 = 1.0 - l1 - l2;
+      const double tol = -1e-9;
+      if (l0 < tol || l1 < tol || l2 < tol) continue;
+      const double r = l0 * distance_[c[0]] + l1 * distance_[c[1]] + l2 * distance_[c[2]];
+      const double mismatch = std::abs(r - radius);
+      if (mismatch < best)
+      {
+        best = mismatch;
+        face = faces_[t];
+        bary = Vec3(l0, l1, l2); // corners are stored in the mesh's own order
+      }
+    }
+    return best < kInf;
+  }
+
+private:
+  std::pair<int, int> cellOf(const Eigen::Vector2d& p) const
+  {
+    const int x = std::clamp(static_cast<int>((p.x() - lo_.x()) / cell_), 0, nx_ - 1);
+    const int y = std::clamp(static_cast<int>((p.y() - lo_.y()) / cell_), 0, ny_ - 1);
+    return {x, y};
+  }
+
+  std::unordered_map<int, size_t> local_;
+  std::vector<Eigen::Vector2d> uv_;
+  std::vector<double> distance_;
+  std::vector<int> faces_;
+  std::vector<std::array<int, 3>> corners_;
+  Eigen::Vector2d lo_ = Eigen::Vector2d::Zero(), hi_ = Eigen::Vector2d::Zero();
+  double cell_ = 1.0;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::vector<int>> cells_;
+};
+
+struct Assignment
+{
+  int patch;
+  int face;
+  Vec3 bary;
+  Vec3 position;
+};
+} // namespace
+
+/// The template side of one landmark's patch.
+struct TemplatePatches::Patch
+{
+  OrientedSurfacePoint landmark;
+  PolarPatch disc;                                  ///< template vertices within tau_d
+  std::vector<int> anchors;                         ///< indices into disc
+  std::vector<std::vector<double>> anchorDistances; ///< per anchor, per disc vertex
+  std::vector<std::vector<int>> neighbours;         ///< disc adjacency (indices into disc)
+  std::vector<int> start;                           ///< disc indices growth starts from
+};
+
+TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
+                                 const std::vector<OrientedSurfacePoint>& landmarks,
+                                 const PatchCorrespondenceOptions& options)
+    : mesh_(templateMesh), options_(options)
+{
+  if (templateMesh.numFaces() == 0) throw Error("patch correspondence: the template is empty");
+  if (!(options.maxRadius > 0) || !(options.epsilon > 0) || options.minRadius < 0)
+    throw Error("patch correspondence: radii and tolerance must be positive");
+  for (const auto& l : landmarks) checkLandmark(templateMesh, l, "template");
+  const ExponentialMapper mapper(templateMesh);
+  patches_.resize(landmarks.size());
+  parallelFor(
+      0, static_cast<int>(landmarks.size()),
+      [&](int i)
+      {
+        auto patch = std::make_unique<Patch>();
+        patch->landmark = landmarks[i];
+        try
+        {
+          patch->disc = mapper.map(landmarks[i].face, landmarks[i].bary, landmarks[i].direction,
+                                   options_.maxRadius);
+        }
+        catch (const Error&)
+        {
+          patch->disc = {}; // degenerate seed triangle or direction along the normal
+        }
+        const PolarPatch& disc = patch->disc;
+        const int n = static_cast<int>(disc.vertices.size());
+        std::unordered_map<int, int> local;
+        for (int k = 0; k < n; ++k) local[disc.vertices[k]] = k;
+        patch->neighbours.resize(n);
+        for (int k = 0; k < n; ++k)
+        {
+          const int v = disc.vertices[k];
+          for (const int* w = mapper.topology().vertexVertices.begin(v);
+               w != mapper.topology().vertexVertices.end(v); ++w)
+          {
+            const auto it = local.find(*w);
+            if (it != local.end()) patch->neighbours[k].push_back(it->second);
+          }
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          const auto it = local.find(templateMesh.F(landmarks[i].face, c));
+          if (it != local.end()) patch->start.push_back(it->second);
+        }
+        // Anchors: around the seed at half the radius, evenly in angle.
+        for (int a = 0; a < options_.anchors && n > 0; ++a)
+        {
+          const double angle = 2.0 * M_PI * a / options_.anchors;
+          const Eigen::Vector2d target =
+              0.5 * options_.maxRadius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+          int best = -1;
+          for (int k = 0; k < n; ++k)
+            if (best < 0 ||
+                (disc.coordinates[k] - target).norm() < (disc.coordinates[best] - target).norm())
+              best = k;
+          if ((disc.coordinates[best] - target).norm() > 0.25 * options_.maxRadius) continue;
+          if (std::find(patch->anchors.begin(), patch->anchors.end(), best) != patch->anchors.end())
+            continue;
+          std::vector<int> reached;
+          const Eigen::VectorXd d = mapper.geodesic().distancesFromSeeds(
+              {{disc.vertices[best], 0.0}}, 2.0 * options_.maxRadius, reached);
+          std::vector<double> onDisc(n);
+          for (int k = 0; k < n; ++k) onDisc[k] = d[disc.vertices[k]];
+          patch->anchors.push_back(best);
+          patch->anchorDistances.push_back(std::move(onDisc));
+        }
+        patches_[i] = std::move(patch);
+      },
+      1);
+}
+
+TemplatePatches::~TemplatePatches() = default;
+
+FrameCorrespondence
+TemplatePatches::correspond(const TriangleMesh& frame,
+                            const std::vector<OrientedSurfacePoint>& frameLandmarks) const
+{
+  if (frame.numFaces() == 0) throw Error("patch correspondence: the frame is empty");
+  for (const auto& l : frameLandmarks) checkLandmark(frame, l, "frame");
+  const ExponentialMapper mapper(frame);
+  const double eps = options_.epsilon;
+
+  FrameCorrespondence result;
+  result.vertices.resize(mesh_.numVertices());
+  result.patches.resize(patches_.size());
+  std::vector<std::vector<Assignment>> perPatch(patches_.size());
+
+  parallelFor(
+      0, static_cast<int>(patches_.size()),
+      [&](int i)
+      {
+        const Patch& patch = *patches_[i];
+        PatchSummary& summary = result.patches[i];
+        summary.landmarkId = patch.landmark.id;
+        const auto image =
+            std::find_if(frameLandmarks.begin(), frameLandmarks.end(),
+                         [&](const OrientedSurfacePoint& l) { return l.id == patch.landmark.id; });
+        const int n = static_cast<int>(patch.disc.vertices.size());
+        if (image == frameLandmarks.end() || n == 0) return;
+        PolarPatch chart;
+        try
+        {
+          chart = mapper.map(image->face, image->bary, image->direction,
+                             options_.chartMargin * options_.maxRadius);
+        }
+        catch (const Error&)
+        {
+          return;
+        }
+        const ChartLocator locator(frame, mapper.topology(), chart);
+
+        // f(t) by equal polar coordinates; then the near-isometry test against the seed.
+        std::vector<int> face(n, -1);
+        std::vector<Vec3> bary(n, Vec3::Zero());
+        std::vector<char> consistent(n, 0);
+        for (int k = 0; k < n; ++k)
+        {
+          if (!locator.locate(patch.disc.coordinates[k], patch.disc.distances[k], face[k], bary[k]))
+          {
+            face[k] = -1;
+            continue;
+          }
+          consistent[k] = 1;
+        }
+        // Geodesic distances on the frame from the seed's image.
+        std::vector<int> reached;
+        const Eigen::VectorXd fromSeed = mapper.geodesic().distancesFromSeeds(
+            seedsAtSurfacePoint(frame, image->face, image->bary),
+            options_.chartMargin * options_.maxRadius + eps, reached);
+        for (int k = 0; k < n; ++k)
+          if (consistent[k] && !(std::abs(distanceAt(frame, fromSeed, face[k], bary[k]) -
+                                          patch.disc.distances[k]) <= eps))
+            consistent[k] = 0;
+        // ... and against each anchor whose own image passed.
+        for (size_t a = 0; a < patch.anchors.size(); ++a)
+        {
+          const int anchor = patch.anchors[a];
+          if (!consistent[anchor]) continue;
+          const Eigen::VectorXd d = mapper.geodesic().distancesFromSeeds(
+              seedsAtSurfacePoint(frame, face[anchor], bary[anchor]),
+              2.0 * options_.maxRadius + eps, reached);
+          for (int k = 0; k < n; ++k)
+            if (consistent[k] && std::isfinite(patch.anchorDistances[a][k]) &&
+                !(std::abs(distanceAt(frame, d, face[k], bary[k]) - patch.anchorDistances[a][k]) <=
+                  eps))
+              consistent[k] = 0;
+        }
+        // Growth from the seed through consistent vertices only.
+        std::vector<char> accepted(n, 0);
+        std::vector<int> queue;
+        for (int s : patch.start)
+          if (consistent[s] && !accepted[s]) accepted[s] = 1, queue.push_back(s);
+        for (size_t q = 0; q < queue.size(); ++q)
+          for (int w : patch.neighbours[queue[q]])
+            if (consistent[w] && !accepted[w]) accepted[w] = 1, queue.push_back(w);
+        for (int k = 0; k < n; ++k)
+        {
+          summary.inconsistent += !consistent[k];
+          if (!accepted[k]) continue;
+          ++summary.vertices;
+          summary.radius = std::max(summary.radius, patch.disc.distances[k]);
+        }
+        summary.kept = summary.vertices > 0 && summary.radius >= options_.minRadius;
+        if (!summary.kept) return;
+        for (int k = 0; k < n; ++k)
+          if (accepted[k])
+            perPatch[i].push_back({patch.disc.vertices[k], face[k], bary[k],
+                                   surfacePosition(frame, face[k], bary[k])});
+      },
+      1);
+
+  // Merge: per template vertex, the medoid of its assignments (the one with the least sum of
+  // squared distances to the others), then the mean of the assignments that agree with it,
+  // projected back onto the frame. Assignments that agree lie within a few centimetres, where
+  // the extrinsic mean projected onto the surface approximates the geodesic (Karcher) mean;
+  // the medoid step keeps a stray patch from pulling the result between two limbs.
+  std::vector<std::vector<std::pair<int, const Assignment*>>> byVertex(mesh_.numVertices());
+  for (size_t i = 0; i < perPatch.size(); ++i)
+    for (const Assignment& a : perPatch[i]) byVertex[a.patch].push_back({static_cast<int>(i), &a});
+  const SurfaceLocator frameLocator(frame);
+  parallelFor(0, mesh_.numVertices(),
+              [&](int v)
+              {
+                const auto& list = byVertex[v];
+                if (list.empty()) return;
+                VertexMatch& match = result.vertices[v];
+                match.patches = static_cast<int>(list.size());
+                size_t medoid = 0;
+                double bestCost = kInf;
+                for (size_t a = 0; a < list.size(); ++a)
+                {
+                  double cost = 0.0;
+                  for (const auto& b : list)
+                    cost += (list[a].second->position - b.second->position).squaredNorm();
+                  if (cost < bestCost) bestCost = cost, medoid = a;
+                }
+                Vec3 mean = Vec3::Zero();
+                int count = 0;
+                for (const auto& b : list)
+                  if ((b.second->position - list[medoid].second->position).norm() <=
+                      options_.agreement)
+                    mean += b.second->position, ++count;
+                mean /= count;
+                if (count == 1)
+                {
+                  match.face = list[medoid].second->face;
+                  match.bary = list[medoid].second->bary;
+                  match.position = list[medoid].second->position;
+                }
+                else
+                {
+                  const SurfacePoint p = frameLocator.closestPoint(mean);
+                  match.face = p.face;
+                  match.bary = p.bary;
+                  match.position = p.position;
+                }
+                double spread = 0.0, nearest = kInf;
+                for (const auto& b : list)
+                {
+                  const double d = (b.second->position - match.position).norm();
+                  spread += d * d;
+                  if (d < nearest) nearest = d, match.patchId = patches_[b.first]->landmark.id;
+                }
+                match.spread = std::sqrt(spread / list.size());
+              });
+  return result;
+}
+
+FrameCorrespondence rigidNearestCorrespondence(
+    const TriangleMesh& templateMesh, const std::vector<OrientedSurfacePoint>& templateLandmarks,
+    const TriangleMesh& frame, const std::vector<OrientedSurfacePoint>& frameLandmarks)
+{
+  if (templateMesh.numFaces() == 0 || frame.numFaces() == 0)
+    throw Error("rigid correspondence: empty template or frame");
+  std::vector<Vec3> from, to;
+  for (const auto& t : templateLandmarks)
+  {
+    checkLandmark(templateMesh, t, "template");
+    for (const auto& s : frameLandmarks)
+      if (s.id == t.id)
+      {
+        checkLandmark(frame, s, "frame");
+        from.push_back(surfacePosition(templateMesh, t.face, t.bary));
+        to.push_back(surfacePosition(frame, s.face, s.bary));
+      }
+  }
+  Eigen::Matrix4d transform = Eigen::Matrix4d::Identity();
+  if (from.size() >= 3)
+  {
+    Eigen::Matrix3Xd a(3, from.size()), b(3, to.size());
+    for (size_t k = 0; k < from.size(); ++k) a.col(k) = from[k], b.col(k) = to[k];
+    transform = Eigen::umeyama(a, b, false);
+  }
+  const SurfaceLocator locator(frame);
+  FrameCorrespondence result;
+  result.vertices.resize(templateMesh.numVertices());
+  parallelFor(0, templateMesh.numVertices(),
+              [&](int v)
+              {
+                const Vec3 p = transform.topLeftCorner<3, 3>() * templateMesh.vertex(v) +
+                               transform.topRightCorner<3, 1>();
+                const SurfacePoint q = locator.closestPoint(p);
+                VertexMatch& m = result.vertices[v];
+                m.face = q.face;
+                m.bary = q.bary;
+                m.position = q.position;
+                m.patches = 1;
+              });
+  return result;
+}
+} // namespace clothtrack

@@ -1,0 +1,264 @@
+#include "ctPatchCorrespondence.h"
+
+#include "ctFrameName.h"
+#include "ctLandmarkPolyData.h"
+#include "ctMeshConversion.h"
+
+#include <clothtrack/Error.h>
+#include <clothtrack/MeshValidation.h>
+#include <clothtrack/PatchCorrespondence.h>
+#include <clothtrack/TemplateSelection.h>
+
+#include <vtkCharArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+
+#include <chrono>
+
+vtkStandardNewMacro(ctPatchCorrespondence);
+
+namespace
+{
+
+template <class ArrayType> vtkSmartPointer<ArrayType> makeArray(const char* name, int components)
+{
+  auto a = vtkSmartPointer<ArrayType>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  return a;
+}
+
+void addField(vtkFieldData* data, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  data->AddArray(a);
+}
+
+/// A copy of the template carrying the correspondence of one frame.
+vtkSmartPointer<vtkPolyData> correspondencePolyData(vtkPolyData* templateData,
+                                                    const clothtrack::FrameCorrespondence& c)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->CopyStructure(templateData);
+  const vtkIdType n = static_cast<vtkIdType>(c.vertices.size());
+  auto matched = makeArray<vtkCharArray>("Matched", 1);
+  auto position = makeArray<vtkDoubleArray>("TargetPosition", 3);
+  auto face = makeArray<vtkIntArray>("TargetFace", 1);
+  auto bary = makeArray<vtkDoubleArray>("TargetBarycentric", 3);
+  auto count = makeArray<vtkIntArray>("PatchCount", 1);
+  auto spread = makeArray<vtkDoubleArray>("Spread", 1);
+  auto patch = makeArray<vtkIntArray>("PatchId", 1);
+  for (vtkAbstractArray* a :
+       {static_cast<vtkAbstractArray*>(matched), static_cast<vtkAbstractArray*>(position),
+        static_cast<vtkAbstractArray*>(face), static_cast<vtkAbstractArray*>(bary),
+        static_cast<vtkAbstractArray*>(count), static_cast<vtkAbstractArray*>(spread),
+        static_cast<vtkAbstractArray*>(patch)})
+    a->SetNumberOfTuples(n);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    const clothtrack::VertexMatch& m = c.vertices[v];
+    matched->SetValue(v, m.matched() ? 1 : 0);
+    position->SetTuple3(v, m.position[0], m.position[1], m.position[2]);
+    face->SetValue(v, m.face);
+    bary->SetTuple3(v, m.bary[0], m.bary[1], m.bary[2]);
+    count->SetValue(v, m.patches);
+    spread->SetValue(v, m.spread);
+    patch->SetValue(v, m.patchId);
+  }
+  vtkPointData* pd = out->GetPointData();
+  pd->AddArray(matched);
+  pd->AddArray(position);
+  pd->AddArray(face);
+  pd->AddArray(bary);
+  pd->AddArray(count);
+  pd->AddArray(spread);
+  pd->AddArray(patch);
+  return out;
+}
+} // namespace
+
+ctPatchCorrespondence::ctPatchCorrespondence()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkTable* ctPatchCorrespondence::GetSummaryOutput()
+{
+  return vtkTable::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+int ctPatchCorrespondence::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
+  return 1;
+}
+
+int ctPatchCorrespondence::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 1 ? "vtkTable" : "vtkMultiBlockDataSet");
+  return 1;
+}
+
+int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                       vtkInformationVector* outputVector)
+{
+  using namespace clothtrack;
+  auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
+  auto* landmarkBlocks = vtkMultiBlockDataSet::GetData(inputVector[1], 0);
+  const int n = sequence ? static_cast<int>(sequence->GetNumberOfBlocks()) : 0;
+  if (n == 0)
+  {
+    vtkErrorMacro(<< "patch correspondence: the sequence has no frame");
+    return 0;
+  }
+  if (!landmarkBlocks || static_cast<int>(landmarkBlocks->GetNumberOfBlocks()) != n)
+  {
+    vtkErrorMacro(<< "patch correspondence: the landmarks input must hold one block per frame ("
+                  << n << " frames, " << (landmarkBlocks ? landmarkBlocks->GetNumberOfBlocks() : 0u)
+                  << " landmark blocks)");
+    return 0;
+  }
+  try
+  {
+    auto frameMesh = [&](int k)
+    {
+      vtkDataObject* block = sequence->GetBlock(static_cast<unsigned>(k));
+      const std::string name = frameName(block, k);
+      auto* poly = vtkPolyData::SafeDownCast(block);
+      if (!poly) throw Error(name + " is not a vtkPolyData");
+      TriangleMesh mesh = toTriangleMesh(poly, name);
+      validateMesh(mesh, name);
+      return mesh;
+    };
+    auto frameLandmarks = [&](int k, const TriangleMesh& mesh)
+    {
+      auto* poly = vtkPolyData::SafeDownCast(landmarkBlocks->GetBlock(static_cast<unsigned>(k)));
+      return landmarkSurfacePoints(poly, mesh.numFaces(),
+                                   "landmarks of " + frameName(sequence->GetBlock(k), k));
+    };
+
+    // Template: given, or chosen by topology then area uniformity.
+    int chosen = this->TemplateFrame;
+    if (chosen >= n)
+      throw Error("patch correspondence: template frame " + std::to_string(chosen) +
+                  " is beyond the last frame (" + std::to_string(n - 1) + ")");
+    if (chosen < 0)
+    {
+      std::vector<FrameTopology> criteria;
+      for (int k = 0; k < n; ++k) criteria.push_back(frameTopology(frameMesh(k), 0.1));
+      chosen = selectTemplate(criteria, {}).chosen;
+    }
+    this->ChosenFrame = chosen;
+    this->UpdateProgress(0.05);
+    auto* templateData = vtkPolyData::SafeDownCast(sequence->GetBlock(chosen));
+    const TriangleMesh templateMesh = frameMesh(chosen);
+    const std::vector<OrientedSurfacePoint> templateLandmarks =
+        frameLandmarks(chosen, templateMesh);
+    if (templateLandmarks.empty())
+      throw Error("patch correspondence: the template " +
+                  frameName(sequence->GetBlock(chosen), chosen) + " has no valid landmark");
+    PatchCorrespondenceOptions options;
+    options.epsilon = this->Epsilon;
+    options.minRadius = this->MinimumRadius;
+    options.maxRadius = this->MaximumRadius;
+    options.anchors = this->NumberOfAnchors;
+    const TemplatePatches patches(templateMesh, templateLandmarks, options);
+
+    auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
+    vtkTable* table = vtkTable::GetData(outputVector, 1);
+    output->SetNumberOfBlocks(n);
+    auto frameColumn = makeArray<vtkIntArray>("Frame", 1);
+    auto matchedColumn = makeArray<vtkDoubleArray>("MatchedFraction", 1);
+    auto keptColumn = makeArray<vtkIntArray>("PatchesKept", 1);
+    auto pairsColumn = makeArray<vtkIntArray>("LandmarkPairs", 1);
+    auto secondsColumn = makeArray<vtkDoubleArray>("Seconds", 1);
+    for (int k = 0; k < n && !this->GetAbortExecute(); ++k)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      FrameCorrespondence c;
+      int pairs = 0, kept = 0;
+      if (k == chosen)
+      {
+        // The template maps to itself.
+        c.vertices.resize(templateMesh.numVertices());
+        for (int f = 0; f < templateMesh.numFaces(); ++f)
+          for (int corner = 0; corner < 3; ++corner)
+          {
+            VertexMatch& m = c.vertices[templateMesh.F(f, corner)];
+            m.face = f;
+            m.bary = Vec3::Unit(corner);
+            m.position = templateMesh.vertex(templateMesh.F(f, corner));
+            m.patches = 1;
+          }
+      }
+      else
+      {
+        const TriangleMesh frame = frameMesh(k);
+        const std::vector<OrientedSurfacePoint> landmarks = frameLandmarks(k, frame);
+        if (landmarks.empty())
+          vtkWarningMacro(<< "patch correspondence: " << frameName(sequence->GetBlock(k), k)
+                          << " has no landmark; no vertex is matched");
+        c = patches.correspond(frame, landmarks);
+        for (const auto& p : c.patches)
+        {
+          kept += p.kept;
+          pairs += p.vertices > 0 || p.inconsistent > 0;
+        }
+      }
+      vtkSmartPointer<vtkPolyData> block = correspondencePolyData(templateData, c);
+      vtkFieldData* fd = block->GetFieldData();
+      vtkNew<vtkIntArray> index, templateIndex;
+      index->SetName("FrameIndex");
+      index->InsertNextValue(k);
+      templateIndex->SetName("TemplateFrame");
+      templateIndex->InsertNextValue(chosen);
+      fd->AddArray(index);
+      fd->AddArray(templateIndex);
+      addField(fd, "MatchedFraction", c.matchedFraction());
+      output->SetBlock(k, block);
+      output->GetMetaData(static_cast<unsigned>(k))
+          ->Set(vtkCompositeDataSet::NAME(), ("correspondence_" + std::to_string(k)).c_str());
+      frameColumn->InsertNextValue(k);
+      matchedColumn->InsertNextValue(c.matchedFraction());
+      keptColumn->InsertNextValue(kept);
+      pairsColumn->InsertNextValue(pairs);
+      secondsColumn->InsertNextValue(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      this->UpdateProgress(0.05 + 0.95 * (k + 1) / n);
+    }
+    for (vtkAbstractArray* column :
+         {static_cast<vtkAbstractArray*>(frameColumn),
+          static_cast<vtkAbstractArray*>(matchedColumn), static_cast<vtkAbstractArray*>(keptColumn),
+          static_cast<vtkAbstractArray*>(pairsColumn),
+          static_cast<vtkAbstractArray*>(secondsColumn)})
+      table->AddColumn(column);
+  }
+  catch (const Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return 1;
+}
+
+void ctPatchCorrespondence::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Epsilon: " << this->Epsilon << "\n";
+  os << indent << "MinimumRadius: " << this->MinimumRadius << "\n";
+  os << indent << "MaximumRadius: " << this->MaximumRadius << "\n";
+  os << indent << "NumberOfAnchors: " << this->NumberOfAnchors << "\n";
+  os << indent << "TemplateFrame: " << this->TemplateFrame << "\n";
+}
