@@ -90,6 +90,7 @@ std::vector<OrientedSurfacePoint> landmarkSurfacePoints(vtkPolyData* landmarks, 
   vtkDataArray* bary = pd->GetArray("FrameBarycentric");
   vtkDataArray* direction = pd->GetArray("Direction");
   vtkDataArray* ids = pd->GetArray("LandmarkId");
+  vtkDataArray* offset = pd->GetArray("Offset");
   if (!valid || !face || !bary || !direction || bary->GetNumberOfComponents() != 3 ||
       direction->GetNumberOfComponents() != 3)
     throw Error(name + ": landmarks need point arrays Valid, FrameFace, FrameBarycentric (3) and "
@@ -100,6 +101,7 @@ std::vector<OrientedSurfacePoint> landmarkSurfacePoints(vtkPolyData* landmarks, 
     OrientedSurfacePoint p;
     p.id = ids ? static_cast<int>(ids->GetTuple1(i)) : static_cast<int>(i);
     p.face = static_cast<int>(face->GetTuple1(i));
+    p.offset = offset ? offset->GetTuple1(i) : 0.0;
     if (p.face < 0 || p.face >= numFaces)
       throw Error(name + ": landmark " + std::to_string(p.id) + " lies on face " +
                   std::to_string(p.face) + ", but the frame has " + std::to_string(numFaces) +

@@ -19,8 +19,8 @@ transferredLandmarksToPolyData(const std::vector<OrientedPoint>& bodyPoints,
                                const std::vector<TransferredLandmark>& transferred);
 
 /// The valid landmarks of such a polydata as surface points (id from LandmarkId, else the point
-/// index). Throws Error naming `name` when Valid, FrameFace, FrameBarycentric or Direction is
-/// missing or a face is outside [0, numFaces).
+/// index; offset from Offset when present). Throws Error naming `name` when Valid, FrameFace,
+/// FrameBarycentric or Direction is missing or a face is outside [0, numFaces).
 CTFILTERS_EXPORT std::vector<OrientedSurfacePoint>
 landmarkSurfacePoints(vtkPolyData* landmarks, int numFaces, const std::string& name);
 /// Adds LandmarkId, LandmarkName and VertexId (the model's landmark order) to `landmarks`.

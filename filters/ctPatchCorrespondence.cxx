@@ -174,6 +174,7 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
     options.minRadius = this->MinimumRadius;
     options.maxRadius = this->MaximumRadius;
     options.anchors = this->NumberOfAnchors;
+    options.maxSeedOffset = this->MaximumSeedOffset;
     const TemplatePatches patches(templateMesh, templateLandmarks, options);
 
     auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
@@ -260,5 +261,6 @@ void ctPatchCorrespondence::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumRadius: " << this->MinimumRadius << "\n";
   os << indent << "MaximumRadius: " << this->MaximumRadius << "\n";
   os << indent << "NumberOfAnchors: " << this->NumberOfAnchors << "\n";
+  os << indent << "MaximumSeedOffset: " << this->MaximumSeedOffset << "\n";
   os << indent << "TemplateFrame: " << this->TemplateFrame << "\n";
 }

@@ -14,7 +14,8 @@
  * MaximumRadius (tau_d) is mapped by equal geodesic polar coordinates around the two landmarks,
  * kept where the map is near-isometric (geodesic distances to the seed and to anchor points
  * differ by at most Epsilon) and grown from the seed through kept vertices; patches smaller
- * than MinimumRadius (tau_s) are dropped. See clothtrack/PatchCorrespondence.h for the method
+ * than MinimumRadius (tau_s) are dropped. Landmarks further than MaximumSeedOffset from the body
+ * (their Offset array) seed no patch. See clothtrack/PatchCorrespondence.h for the method
  * and the merge of overlapping patches. Defaults are the paper's (section 4.4).
  *
  * Output port 0: vtkMultiBlockDataSet, one copy of the template per frame with point data
@@ -57,6 +58,10 @@ public:
   /// Points checked by the near-isometry test besides the seed.
   vtkSetClampMacro(NumberOfAnchors, int, 0, 64);
   vtkGetMacro(NumberOfAnchors, int);
+  /// Landmarks further than this from the body (their Offset, metres) seed no patch: loose cloth
+  /// slides over the body, so they are not the same cloth point in every frame.
+  vtkSetClampMacro(MaximumSeedOffset, double, 0.0, 100.0);
+  vtkGetMacro(MaximumSeedOffset, double);
   /// Template frame index; -1 (default) chooses it automatically.
   vtkSetMacro(TemplateFrame, int);
   vtkGetMacro(TemplateFrame, int);
@@ -82,6 +87,7 @@ private:
   double MinimumRadius = 0.1;
   double MaximumRadius = 0.25;
   int NumberOfAnchors = 6;
+  double MaximumSeedOffset = 0.03;
   int TemplateFrame = -1;
   int ChosenFrame = -1;
 };

@@ -147,6 +147,19 @@ public:
     return best < kInf;
   }
 
+  /// Chart coordinates of a surface point, false when its triangle is not in the chart.
+  bool uvAt(const TriangleMesh& mesh, int face, const Vec3& bary, Eigen::Vector2d& uv) const
+  {
+    uv.setZero();
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto it = local_.find(mesh.F(face, k));
+      if (it == local_.end()) return false;
+      uv += bary[k] * uv_[it->second];
+    }
+    return true;
+  }
+
 private:
   std::pair<int, int> cellOf(const Eigen::Vector2d& p) const
   {
@@ -184,6 +197,8 @@ struct TemplatePatches::Patch
   std::vector<std::vector<double>> anchorDistances; ///< per anchor, per disc vertex
   std::vector<std::vector<int>> neighbours;         ///< disc adjacency (indices into disc)
   std::vector<int> start;                           ///< disc indices growth starts from
+  /// Other landmarks inside the disc: id and chart coordinates (to correct the seed direction).
+  std::vector<std::pair<int, Eigen::Vector2d>> others;
 };
 
 TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
@@ -231,6 +246,22 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
         {
           const auto it = local.find(templateMesh.F(landmarks[i].face, c));
           if (it != local.end()) patch->start.push_back(it->second);
+        }
+        for (size_t j = 0; j < landmarks.size(); ++j)
+        {
+          if (static_cast<int>(j) == i || landmarks[j].id == landmarks[i].id ||
+              std::abs(landmarks[j].offset) > options_.maxSeedOffset)
+            continue;
+          Eigen::Vector2d uv = Eigen::Vector2d::Zero();
+          bool inside = true;
+          for (int c = 0; c < 3 && inside; ++c)
+          {
+            const auto it = local.find(templateMesh.F(landmarks[j].face, c));
+            inside = it != local.end();
+            if (inside) uv += landmarks[j].bary[c] * disc.coordinates[it->second];
+          }
+          if (inside && uv.norm() > 0.2 * options_.maxRadius)
+            patch->others.push_back({landmarks[j].id, uv});
         }
         // Anchors: around the seed at half the radius, evenly in angle.
         for (int a = 0; a < options_.anchors && n > 0; ++a)
@@ -287,6 +318,9 @@ TemplatePatches::correspond(const TriangleMesh& frame,
                          [&](const OrientedSurfacePoint& l) { return l.id == patch.landmark.id; });
         const int n = static_cast<int>(patch.disc.vertices.size());
         if (image == frameLandmarks.end() || n == 0) return;
+        if (std::abs(patch.landmark.offset) > options_.maxSeedOffset ||
+            std::abs(image->offset) > options_.maxSeedOffset)
+          return;
         PolarPatch chart;
         try
         {
@@ -299,13 +333,52 @@ TemplatePatches::correspond(const TriangleMesh& frame,
         }
         const ChartLocator locator(frame, mapper.topology(), chart);
 
+        // Direction correction: the other landmarks of the disc should keep their polar angle
+        // around the seed. A landmark direction carried from the body onto cloth is only good to
+        // some degrees, and its error grows linearly towards the patch border; the angles of
+        // the neighbouring landmarks, weighted by their distance, average it out.
+        // The same neighbours check the seed pair itself: a landmark placed on the wrong limb
+        // or fold of one surface keeps a perfectly isometric patch, but its geodesic distances
+        // to the other landmarks disagree (the other landmark is not found in the frame's
+        // chart, or at another radius). A seed that most neighbours contradict is dropped.
+        double sinSum = 0.0, cosSum = 0.0;
+        int agree = 0, disagree = 0;
+        for (const auto& [id, uvT] : patch.others)
+        {
+          const int otherId = id;
+          const auto other =
+              std::find_if(frameLandmarks.begin(), frameLandmarks.end(),
+                           [otherId](const OrientedSurfacePoint& l) { return l.id == otherId; });
+          Eigen::Vector2d uvS;
+          if (other == frameLandmarks.end() || std::abs(other->offset) > options_.maxSeedOffset)
+            continue;
+          if (!locator.uvAt(frame, other->face, other->bary, uvS) ||
+              std::abs(uvS.norm() - uvT.norm()) > options_.seedTolerance)
+          {
+            ++disagree;
+            continue;
+          }
+          ++agree;
+          if (std::abs(uvS.norm() - uvT.norm()) > options_.agreement) continue;
+          const double turn = std::atan2(uvS.y(), uvS.x()) - std::atan2(uvT.y(), uvT.x());
+          sinSum += uvT.norm() * std::sin(turn);
+          cosSum += uvT.norm() * std::cos(turn);
+        }
+        double turn = sinSum != 0.0 ? std::atan2(sinSum, cosSum) : 0.0;
+        if (std::abs(turn) > options_.maxTurn) turn = 0.0; // a mismatch, not a direction error
+        const Eigen::Matrix2d rotate = Eigen::Rotation2Dd(turn).toRotationMatrix();
+        summary.turn = turn;
+        summary.contradicted = disagree > agree;
+        if (summary.contradicted) return;
+
         // f(t) by equal polar coordinates; then the near-isometry test against the seed.
         std::vector<int> face(n, -1);
         std::vector<Vec3> bary(n, Vec3::Zero());
         std::vector<char> consistent(n, 0);
         for (int k = 0; k < n; ++k)
         {
-          if (!locator.locate(patch.disc.coordinates[k], patch.disc.distances[k], face[k], bary[k]))
+          if (!locator.locate(rotate * patch.disc.coordinates[k], patch.disc.distances[k], face[k],
+                              bary[k]))
           {
             face[k] = -1;
             continue;

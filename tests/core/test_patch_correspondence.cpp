@@ -150,6 +150,11 @@ TEST(PatchCorrespondence, MissingLandmarksAndSmallPatches)
   const FrameCorrespondence none = patches.correspond(sphere, {});
   EXPECT_EQ(none.matchedFraction(), 0.0);
   for (const auto& p : none.patches) EXPECT_FALSE(p.kept);
+  // Landmarks on loose cloth (far from the body) seed nothing.
+  auto loose = templateLandmarks;
+  for (auto& l : loose) l.offset = 0.08;
+  EXPECT_EQ(patches.correspond(sphere, loose).matchedFraction(), 0.0);
+  EXPECT_GT(patches.correspond(sphere, templateLandmarks).matchedFraction(), 0.2);
   // tau_s above tau_d: every patch is too small and discarded.
   PatchCorrespondenceOptions options;
   options.minRadius = 0.3;
