@@ -164,13 +164,12 @@ int evaluate(Sequence& s)
           ++e.second;
         }
       for (const auto& p : c.patches)
-        std::printf(
-            "frame %zu landmark %2d: radius %.2f, %d vertices, %d inconsistent, turn %+.2f, "
-            "mean error of its nearest vertices %.2f cm\n",
-            k, p.landmarkId, p.radius, p.vertices, p.inconsistent, p.turn,
-            byPatch.count(p.landmarkId)
-                ? 100 * byPatch[p.landmarkId].first / byPatch[p.landmarkId].second
-                : 0.0);
+        std::printf("frame %zu landmark %2d: radius %.2f, %d vertices, %d inconsistent, "
+                    "mean error of its nearest vertices %.2f cm\n",
+                    k, p.landmarkId, p.radius, p.vertices, p.inconsistent,
+                    byPatch.count(p.landmarkId)
+                        ? 100 * byPatch[p.landmarkId].first / byPatch[p.landmarkId].second
+                        : 0.0);
     }
     for (int v = 0; v < templ.numVertices(); ++v)
     {

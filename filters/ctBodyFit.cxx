@@ -5,6 +5,7 @@
 #include "ctFrameName.h"
 #include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
+#include "ctNamedArrays.h"
 
 #include <clothtrack/Error.h>
 #include <clothtrack/LandmarkTransfer.h>
@@ -26,18 +27,6 @@
 #include <memory>
 
 vtkStandardNewMacro(ctBodyFit);
-
-namespace
-{
-
-void addValue(vtkFieldData* data, const char* name, double value)
-{
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->InsertNextValue(value);
-  data->AddArray(a);
-}
-} // namespace
 
 ctBodyFit::ctBodyFit()
 {
@@ -156,21 +145,16 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
       vtkSmartPointer<vtkPolyData> bodyData = toPolyData(body);
       addBodyModelArrays(model, joints, bodyData);
       vtkFieldData* fd = bodyData->GetFieldData();
-      vtkNew<vtkIntArray> index, code;
-      index->SetName("FrameIndex");
-      index->InsertNextValue(k);
-      code->SetName("FitStatus");
-      code->InsertNextValue(static_cast<int>(f.status));
-      fd->AddArray(index);
-      fd->AddArray(code);
+      addFieldValue(fd, "FrameIndex", k);
+      addFieldValue(fd, "FitStatus", static_cast<int>(f.status));
       vtkNew<vtkDoubleArray> pose;
       pose->SetName("Pose");
       for (int j = 0; j < NumJoints; ++j)
         for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.rotations(j, c));
       for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.translation[c]);
       fd->AddArray(pose);
-      addValue(fd, "MedianDistance", f.medianDistance);
-      addValue(fd, "InsideFraction", f.insideFraction);
+      addFieldValue(fd, "MedianDistance", f.medianDistance);
+      addFieldValue(fd, "InsideFraction", f.insideFraction);
       bodies->SetBlock(k, bodyData);
       bodies->GetMetaData(static_cast<unsigned>(k))
           ->Set(vtkCompositeDataSet::NAME(), ("body_" + std::to_string(k)).c_str());

@@ -3,6 +3,7 @@
 #include "ctFrameName.h"
 #include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
+#include "ctNamedArrays.h"
 
 #include <clothtrack/Error.h>
 #include <clothtrack/MeshValidation.h>
@@ -22,28 +23,14 @@
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 
+#include <algorithm>
 #include <chrono>
 
 vtkStandardNewMacro(ctPatchCorrespondence);
 
 namespace
 {
-
-template <class ArrayType> vtkSmartPointer<ArrayType> makeArray(const char* name, int components)
-{
-  auto a = vtkSmartPointer<ArrayType>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(components);
-  return a;
-}
-
-void addField(vtkFieldData* data, const char* name, double value)
-{
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->InsertNextValue(value);
-  data->AddArray(a);
-}
+using clothtrack::namedArray;
 
 /// A copy of the template carrying the correspondence of one frame.
 vtkSmartPointer<vtkPolyData> correspondencePolyData(vtkPolyData* templateData,
@@ -52,19 +39,13 @@ vtkSmartPointer<vtkPolyData> correspondencePolyData(vtkPolyData* templateData,
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->CopyStructure(templateData);
   const vtkIdType n = static_cast<vtkIdType>(c.vertices.size());
-  auto matched = makeArray<vtkCharArray>("Matched", 1);
-  auto position = makeArray<vtkDoubleArray>("TargetPosition", 3);
-  auto face = makeArray<vtkIntArray>("TargetFace", 1);
-  auto bary = makeArray<vtkDoubleArray>("TargetBarycentric", 3);
-  auto count = makeArray<vtkIntArray>("PatchCount", 1);
-  auto spread = makeArray<vtkDoubleArray>("Spread", 1);
-  auto patch = makeArray<vtkIntArray>("PatchId", 1);
-  for (vtkAbstractArray* a :
-       {static_cast<vtkAbstractArray*>(matched), static_cast<vtkAbstractArray*>(position),
-        static_cast<vtkAbstractArray*>(face), static_cast<vtkAbstractArray*>(bary),
-        static_cast<vtkAbstractArray*>(count), static_cast<vtkAbstractArray*>(spread),
-        static_cast<vtkAbstractArray*>(patch)})
-    a->SetNumberOfTuples(n);
+  auto matched = namedArray<vtkCharArray>("Matched", n);
+  auto position = namedArray<vtkDoubleArray>("TargetPosition", n, 3);
+  auto face = namedArray<vtkIntArray>("TargetFace", n);
+  auto bary = namedArray<vtkDoubleArray>("TargetBarycentric", n, 3);
+  auto count = namedArray<vtkIntArray>("PatchCount", n);
+  auto spread = namedArray<vtkDoubleArray>("Spread", n);
+  auto patch = namedArray<vtkIntArray>("PatchId", n);
   for (vtkIdType v = 0; v < n; ++v)
   {
     const clothtrack::VertexMatch& m = c.vertices[v];
@@ -180,11 +161,11 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
     auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
     vtkTable* table = vtkTable::GetData(outputVector, 1);
     output->SetNumberOfBlocks(n);
-    auto frameColumn = makeArray<vtkIntArray>("Frame", 1);
-    auto matchedColumn = makeArray<vtkDoubleArray>("MatchedFraction", 1);
-    auto keptColumn = makeArray<vtkIntArray>("PatchesKept", 1);
-    auto pairsColumn = makeArray<vtkIntArray>("LandmarkPairs", 1);
-    auto secondsColumn = makeArray<vtkDoubleArray>("Seconds", 1);
+    auto frameColumn = namedArray<vtkIntArray>("Frame");
+    auto matchedColumn = namedArray<vtkDoubleArray>("MatchedFraction");
+    auto keptColumn = namedArray<vtkIntArray>("PatchesKept");
+    auto pairsColumn = namedArray<vtkIntArray>("LandmarkPairs");
+    auto secondsColumn = namedArray<vtkDoubleArray>("Seconds");
     for (int k = 0; k < n && !this->GetAbortExecute(); ++k)
     {
       const auto start = std::chrono::steady_clock::now();
@@ -212,22 +193,16 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
           vtkWarningMacro(<< "patch correspondence: " << frameName(sequence->GetBlock(k), k)
                           << " has no landmark; no vertex is matched");
         c = patches.correspond(frame, landmarks);
-        for (const auto& p : c.patches)
-        {
-          kept += p.kept;
-          pairs += p.vertices > 0 || p.inconsistent > 0;
-        }
+        for (const auto& p : c.patches) kept += p.kept;
+        for (const auto& t : templateLandmarks)
+          pairs += std::any_of(landmarks.begin(), landmarks.end(),
+                               [&](const OrientedSurfacePoint& l) { return l.id == t.id; });
       }
       vtkSmartPointer<vtkPolyData> block = correspondencePolyData(templateData, c);
       vtkFieldData* fd = block->GetFieldData();
-      vtkNew<vtkIntArray> index, templateIndex;
-      index->SetName("FrameIndex");
-      index->InsertNextValue(k);
-      templateIndex->SetName("TemplateFrame");
-      templateIndex->InsertNextValue(chosen);
-      fd->AddArray(index);
-      fd->AddArray(templateIndex);
-      addField(fd, "MatchedFraction", c.matchedFraction());
+      addFieldValue(fd, "FrameIndex", k);
+      addFieldValue(fd, "TemplateFrame", chosen);
+      addFieldValue(fd, "MatchedFraction", c.matchedFraction());
       output->SetBlock(k, block);
       output->GetMetaData(static_cast<unsigned>(k))
           ->Set(vtkCompositeDataSet::NAME(), ("correspondence_" + std::to_string(k)).c_str());

@@ -1,5 +1,7 @@
 #include "ctSurfaceTopology.h"
 
+#include "ctNamedArrays.h"
+
 #include "ctMeshConversion.h"
 
 #include <clothtrack/Components.h>
@@ -19,17 +21,6 @@
 
 vtkStandardNewMacro(ctSurfaceTopology);
 
-namespace
-{
-template <class ArrayT> vtkSmartPointer<ArrayT> namedArray(const char* name, vtkIdType size)
-{
-  auto array = vtkSmartPointer<ArrayT>::New();
-  array->SetName(name);
-  array->SetNumberOfTuples(size);
-  return array;
-}
-} // namespace
-
 int ctSurfaceTopology::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                    vtkInformationVector* outputVector)
 {
@@ -48,10 +39,10 @@ int ctSurfaceTopology::RequestData(vtkInformation*, vtkInformationVector** input
     const clothtrack::ManifoldReport manifold = clothtrack::checkManifold(mesh, topology);
     const Eigen::VectorXd areas = clothtrack::mixedVoronoiAreas(mesh);
 
-    auto cellComponent = namedArray<vtkIntArray>("ComponentId", mesh.numFaces());
+    auto cellComponent = clothtrack::namedArray<vtkIntArray>("ComponentId", mesh.numFaces());
     for (int f = 0; f < mesh.numFaces(); ++f) cellComponent->SetValue(f, components.faceLabel[f]);
-    auto pointComponent = namedArray<vtkIntArray>("ComponentId", mesh.numVertices());
-    auto voronoi = namedArray<vtkDoubleArray>("VoronoiArea", mesh.numVertices());
+    auto pointComponent = clothtrack::namedArray<vtkIntArray>("ComponentId", mesh.numVertices());
+    auto voronoi = clothtrack::namedArray<vtkDoubleArray>("VoronoiArea", mesh.numVertices());
     for (int v = 0; v < mesh.numVertices(); ++v)
     {
       pointComponent->SetValue(v, components.vertexLabel[v]);
@@ -62,10 +53,10 @@ int ctSurfaceTopology::RequestData(vtkInformation*, vtkInformationVector** input
     output->GetPointData()->AddArray(voronoi);
 
     const int nc = components.count();
-    auto area = namedArray<vtkDoubleArray>("ComponentArea", nc);
-    auto genus = namedArray<vtkIntArray>("ComponentGenus", nc);
-    auto boundaries = namedArray<vtkIntArray>("ComponentBoundaries", nc);
-    auto euler = namedArray<vtkIntArray>("ComponentEulerCharacteristic", nc);
+    auto area = clothtrack::namedArray<vtkDoubleArray>("ComponentArea", nc);
+    auto genus = clothtrack::namedArray<vtkIntArray>("ComponentGenus", nc);
+    auto boundaries = clothtrack::namedArray<vtkIntArray>("ComponentBoundaries", nc);
+    auto euler = clothtrack::namedArray<vtkIntArray>("ComponentEulerCharacteristic", nc);
     for (int c = 0; c < nc; ++c)
     {
       area->SetValue(c, components.info[c].area);
@@ -73,9 +64,9 @@ int ctSurfaceTopology::RequestData(vtkInformation*, vtkInformationVector** input
       boundaries->SetValue(c, components.info[c].numBoundaries);
       euler->SetValue(c, components.info[c].eulerCharacteristic());
     }
-    auto nmEdges = namedArray<vtkIntArray>("NonManifoldEdges", 1);
+    auto nmEdges = clothtrack::namedArray<vtkIntArray>("NonManifoldEdges", 1);
     nmEdges->SetValue(0, manifold.nonManifoldEdges);
-    auto nmVertices = namedArray<vtkIntArray>("NonManifoldVertices", 1);
+    auto nmVertices = clothtrack::namedArray<vtkIntArray>("NonManifoldVertices", 1);
     nmVertices->SetValue(0, manifold.nonManifoldVertices);
     for (vtkAbstractArray* a :
          {static_cast<vtkAbstractArray*>(area), static_cast<vtkAbstractArray*>(genus),

@@ -56,16 +56,25 @@ double distanceAt(const TriangleMesh& mesh, const Eigen::VectorXd& d, int face, 
   return sum;
 }
 
+/// Chart index of each mesh vertex in a polar chart.
+using ChartIndex = std::unordered_map<int, int>;
+
+ChartIndex chartIndex(const PolarPatch& chart)
+{
+  ChartIndex local;
+  for (size_t k = 0; k < chart.vertices.size(); ++k) local[chart.vertices[k]] = static_cast<int>(k);
+  return local;
+}
+
 /// Point location in a polar chart: the chart's triangles laid out in the plane, bucketed in a
 /// uniform grid.
 class ChartLocator
 {
 public:
   ChartLocator(const TriangleMesh& mesh, const MeshTopology& topology, const PolarPatch& chart)
+      : chart_(chart)
   {
-    for (size_t k = 0; k < chart.vertices.size(); ++k) local_[chart.vertices[k]] = k;
-    uv_ = chart.coordinates;
-    distance_ = chart.distances;
+    const ChartIndex local = chartIndex(chart);
     // Faces with all three corners in the chart.
     std::vector<int> seen;
     for (int v : chart.vertices)
@@ -80,22 +89,22 @@ public:
       bool inside = true;
       for (int k = 0; k < 3 && inside; ++k)
       {
-        const auto it = local_.find(mesh.F(f, k));
-        inside = it != local_.end();
+        const auto it = local.find(mesh.F(f, k));
+        inside = it != local.end();
         if (inside) c[k] = static_cast<int>(it->second);
       }
       if (!inside) continue;
       faces_.push_back(f);
       corners_.push_back(c);
-      edge += (uv_[c[1]] - uv_[c[0]]).norm();
+      edge += (chart_.coordinates[c[1]] - chart_.coordinates[c[0]]).norm();
     }
     if (faces_.empty()) return;
-    lo_ = hi_ = uv_[corners_[0][0]];
+    lo_ = hi_ = chart_.coordinates[corners_[0][0]];
     for (const auto& c : corners_)
       for (int k = 0; k < 3; ++k)
       {
-        lo_ = lo_.cwiseMin(uv_[c[k]]);
-        hi_ = hi_.cwiseMax(uv_[c[k]]);
+        lo_ = lo_.cwiseMin(chart_.coordinates[c[k]]);
+        hi_ = hi_.cwiseMax(chart_.coordinates[c[k]]);
       }
     cell_ = std::max(1e-6, 2.0 * edge / faces_.size());
     nx_ = std::max(1, std::min(512, static_cast<int>((hi_.x() - lo_.x()) / cell_) + 1));
@@ -103,11 +112,11 @@ public:
     cells_.assign(static_cast<size_t>(nx_) * ny_, {});
     for (size_t t = 0; t < corners_.size(); ++t)
     {
-      Eigen::Vector2d a = uv_[corners_[t][0]], b = a;
+      Eigen::Vector2d a = chart_.coordinates[corners_[t][0]], b = a;
       for (int k = 1; k < 3; ++k)
       {
-        a = a.cwiseMin(uv_[corners_[t][k]]);
-        b = b.cwiseMax(uv_[corners_[t][k]]);
+        a = a.cwiseMin(chart_.coordinates[corners_[t][k]]);
+        b = b.cwiseMax(chart_.coordinates[corners_[t][k]]);
       }
       const auto [x0, y0] = cellOf(a);
       const auto [x1, y1] = cellOf(b);
@@ -127,7 +136,8 @@ public:
     for (int t : cells_[static_cast<size_t>(y) * nx_ + x])
     {
       const auto& c = corners_[t];
-      const Eigen::Vector2d a = uv_[c[0]], e1 = uv_[c[1]] - a, e2 = uv_[c[2]] - a, q = uv - a;
+      const Eigen::Vector2d a = chart_.coordinates[c[0]], e1 = chart_.coordinates[c[1]] - a,
+                            e2 = chart_.coordinates[c[2]] - a, q = uv - a;
       const double det = e1.x() * e2.y() - e1.y() * e2.x();
       if (std::abs(det) < 1e-18) continue;
       const double l1 = (q.x() * e2.y() - q.y() * e2.x()) / det;
@@ -135,7 +145,8 @@ public:
       const double l0 = 1.0 - l1 - l2;
       const double tol = -1e-9;
       if (l0 < tol || l1 < tol || l2 < tol) continue;
-      const double r = l0 * distance_[c[0]] + l1 * distance_[c[1]] + l2 * distance_[c[2]];
+      const double r =
+          l0 * chart_.distances[c[0]] + l1 * chart_.distances[c[1]] + l2 * chart_.distances[c[2]];
       const double mismatch = std::abs(r - radius);
       if (mismatch < best)
       {
@@ -147,19 +158,6 @@ public:
     return best < kInf;
   }
 
-  /// Chart coordinates of a surface point, false when its triangle is not in the chart.
-  bool uvAt(const TriangleMesh& mesh, int face, const Vec3& bary, Eigen::Vector2d& uv) const
-  {
-    uv.setZero();
-    for (int k = 0; k < 3; ++k)
-    {
-      const auto it = local_.find(mesh.F(face, k));
-      if (it == local_.end()) return false;
-      uv += bary[k] * uv_[it->second];
-    }
-    return true;
-  }
-
 private:
   std::pair<int, int> cellOf(const Eigen::Vector2d& p) const
   {
@@ -168,9 +166,7 @@ private:
     return {x, y};
   }
 
-  std::unordered_map<int, size_t> local_;
-  std::vector<Eigen::Vector2d> uv_;
-  std::vector<double> distance_;
+  const PolarPatch& chart_;
   std::vector<int> faces_;
   std::vector<std::array<int, 3>> corners_;
   Eigen::Vector2d lo_ = Eigen::Vector2d::Zero(), hi_ = Eigen::Vector2d::Zero();
@@ -197,8 +193,6 @@ struct TemplatePatches::Patch
   std::vector<std::vector<double>> anchorDistances; ///< per anchor, per disc vertex
   std::vector<std::vector<int>> neighbours;         ///< disc adjacency (indices into disc)
   std::vector<int> start;                           ///< disc indices growth starts from
-  /// Other landmarks inside the disc: id and chart coordinates (to correct the seed direction).
-  std::vector<std::pair<int, Eigen::Vector2d>> others;
 };
 
 TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
@@ -218,6 +212,11 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
       {
         auto patch = std::make_unique<Patch>();
         patch->landmark = landmarks[i];
+        if (std::abs(landmarks[i].offset) > options_.maxSeedOffset)
+        {
+          patches_[i] = std::move(patch); // seeds nothing: no disc
+          return;
+        }
         try
         {
           patch->disc = mapper.map(landmarks[i].face, landmarks[i].bary, landmarks[i].direction,
@@ -229,8 +228,7 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
         }
         const PolarPatch& disc = patch->disc;
         const int n = static_cast<int>(disc.vertices.size());
-        std::unordered_map<int, int> local;
-        for (int k = 0; k < n; ++k) local[disc.vertices[k]] = k;
+        const ChartIndex local = chartIndex(disc);
         patch->neighbours.resize(n);
         for (int k = 0; k < n; ++k)
         {
@@ -246,22 +244,6 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
         {
           const auto it = local.find(templateMesh.F(landmarks[i].face, c));
           if (it != local.end()) patch->start.push_back(it->second);
-        }
-        for (size_t j = 0; j < landmarks.size(); ++j)
-        {
-          if (static_cast<int>(j) == i || landmarks[j].id == landmarks[i].id ||
-              std::abs(landmarks[j].offset) > options_.maxSeedOffset)
-            continue;
-          Eigen::Vector2d uv = Eigen::Vector2d::Zero();
-          bool inside = true;
-          for (int c = 0; c < 3 && inside; ++c)
-          {
-            const auto it = local.find(templateMesh.F(landmarks[j].face, c));
-            inside = it != local.end();
-            if (inside) uv += landmarks[j].bary[c] * disc.coordinates[it->second];
-          }
-          if (inside && uv.norm() > 0.2 * options_.maxRadius)
-            patch->others.push_back({landmarks[j].id, uv});
         }
         // Anchors: around the seed at half the radius, evenly in angle.
         for (int a = 0; a < options_.anchors && n > 0; ++a)
@@ -317,8 +299,7 @@ TemplatePatches::correspond(const TriangleMesh& frame,
             std::find_if(frameLandmarks.begin(), frameLandmarks.end(),
                          [&](const OrientedSurfacePoint& l) { return l.id == patch.landmark.id; });
         const int n = static_cast<int>(patch.disc.vertices.size());
-        if (image == frameLandmarks.end() || n == 0) return;
-        if (std::abs(patch.landmark.offset) > options_.maxSeedOffset ||
+        if (image == frameLandmarks.end() || n == 0 ||
             std::abs(image->offset) > options_.maxSeedOffset)
           return;
         PolarPatch chart;
@@ -333,52 +314,13 @@ TemplatePatches::correspond(const TriangleMesh& frame,
         }
         const ChartLocator locator(frame, mapper.topology(), chart);
 
-        // Direction correction: the other landmarks of the disc should keep their polar angle
-        // around the seed. A landmark direction carried from the body onto cloth is only good to
-        // some degrees, and its error grows linearly towards the patch border; the angles of
-        // the neighbouring landmarks, weighted by their distance, average it out.
-        // The same neighbours check the seed pair itself: a landmark placed on the wrong limb
-        // or fold of one surface keeps a perfectly isometric patch, but its geodesic distances
-        // to the other landmarks disagree (the other landmark is not found in the frame's
-        // chart, or at another radius). A seed that most neighbours contradict is dropped.
-        double sinSum = 0.0, cosSum = 0.0;
-        int agree = 0, disagree = 0;
-        for (const auto& [id, uvT] : patch.others)
-        {
-          const int otherId = id;
-          const auto other =
-              std::find_if(frameLandmarks.begin(), frameLandmarks.end(),
-                           [otherId](const OrientedSurfacePoint& l) { return l.id == otherId; });
-          Eigen::Vector2d uvS;
-          if (other == frameLandmarks.end() || std::abs(other->offset) > options_.maxSeedOffset)
-            continue;
-          if (!locator.uvAt(frame, other->face, other->bary, uvS) ||
-              std::abs(uvS.norm() - uvT.norm()) > options_.seedTolerance)
-          {
-            ++disagree;
-            continue;
-          }
-          ++agree;
-          if (std::abs(uvS.norm() - uvT.norm()) > options_.agreement) continue;
-          const double turn = std::atan2(uvS.y(), uvS.x()) - std::atan2(uvT.y(), uvT.x());
-          sinSum += uvT.norm() * std::sin(turn);
-          cosSum += uvT.norm() * std::cos(turn);
-        }
-        double turn = sinSum != 0.0 ? std::atan2(sinSum, cosSum) : 0.0;
-        if (std::abs(turn) > options_.maxTurn) turn = 0.0; // a mismatch, not a direction error
-        const Eigen::Matrix2d rotate = Eigen::Rotation2Dd(turn).toRotationMatrix();
-        summary.turn = turn;
-        summary.contradicted = disagree > agree;
-        if (summary.contradicted) return;
-
         // f(t) by equal polar coordinates; then the near-isometry test against the seed.
         std::vector<int> face(n, -1);
         std::vector<Vec3> bary(n, Vec3::Zero());
         std::vector<char> consistent(n, 0);
         for (int k = 0; k < n; ++k)
         {
-          if (!locator.locate(rotate * patch.disc.coordinates[k], patch.disc.distances[k], face[k],
-                              bary[k]))
+          if (!locator.locate(patch.disc.coordinates[k], patch.disc.distances[k], face[k], bary[k]))
           {
             face[k] = -1;
             continue;

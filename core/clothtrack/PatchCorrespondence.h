@@ -41,28 +41,19 @@ struct PatchCorrespondenceOptions
   /// Assignments of one vertex closer than this to their medoid are averaged; further ones are
   /// outliers of the merge (metres).
   double agreement = 0.05;
-  /// The frame landmark's direction is turned by the mean angle change of the other landmarks
-  /// inside the patch (radians); a larger mean turn means a mismatch and is not applied.
-  double maxTurn = 0.8;
-  /// A seed pair is contradicted by another landmark of its disc when their geodesic distances
-  /// on the template and the frame differ by more than this (metres); a patch whose seed most
-  /// neighbours contradict is dropped.
-  double seedTolerance = 0.1;
   /// Landmarks further than this from the body (|offset|, metres) seed no patch: loose cloth
   /// slides over the body, so a body landmark carried onto it is not the same cloth point from
-  /// one frame to the next (nor do they check other seeds).
+  /// one frame to the next.
   double maxSeedOffset = 0.03;
 };
 
 struct PatchSummary
 {
   int landmarkId = -1;
-  int vertices = 0;          ///< template vertices the patch maps
-  double radius = 0.0;       ///< largest geodesic distance from the seed among them
-  int inconsistent = 0;      ///< disc vertices that failed the near-isometry test
-  double turn = 0.0;         ///< correction applied to the frame landmark's direction, radians
-  bool contradicted = false; ///< dropped: most other landmarks of the disc disagree with the seed
-  bool kept = false;         ///< radius >= tau_s
+  int vertices = 0;     ///< template vertices the patch maps
+  double radius = 0.0;  ///< largest geodesic distance from the seed among them
+  int inconsistent = 0; ///< disc vertices that failed the near-isometry test
+  bool kept = false;    ///< radius >= tau_s
 };
 
 /// Where one template vertex goes on the frame.

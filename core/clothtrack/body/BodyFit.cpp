@@ -79,23 +79,17 @@ Eigen::VectorXd jointPriorWeights(const BodyFitOptions& options)
 /// Rotation parameters of the knees' bend, which is never negative (no knee bends backwards).
 constexpr std::array<int, 2> kHingeBends = {3 * LeftKnee, 3 * RightKnee};
 
-/// Angle of the body's facing direction about `up`.
-double heading(const BodyPose& pose, const Vec3& up)
-{
-  const Vec3 u = up.normalized();
-  const Vec3 facing = axisAngleToMatrix(pose.rotations.row(Pelvis).transpose()) * Vec3::UnitZ();
-  const Vec3 flat = facing - facing.dot(u) * u;
-  const Vec3 reference = (Vec3::UnitZ() - Vec3::UnitZ().dot(u) * u).norm() > 0.5
-                             ? Vec3(Vec3::UnitZ() - Vec3::UnitZ().dot(u) * u)
-                             : Vec3(Vec3::UnitX() - Vec3::UnitX().dot(u) * u);
-  return std::atan2(reference.cross(flat).dot(u), reference.dot(flat));
-}
-
-/// Absolute difference of two headings, in [0, pi].
+/// Angle (0 to pi) between the directions two poses face, seen along `up`.
 double headingChange(const BodyPose& a, const BodyPose& b, const Vec3& up)
 {
-  const double d = std::abs(std::remainder(heading(a, up) - heading(b, up), 2.0 * M_PI));
-  return d;
+  const Vec3 u = up.normalized();
+  auto facing = [&u](const BodyPose& pose)
+  {
+    const Vec3 f = axisAngleToMatrix(pose.rotations.row(Pelvis).transpose()) * Vec3::UnitZ();
+    return Vec3(f - f.dot(u) * u);
+  };
+  const Vec3 fa = facing(a), fb = facing(b);
+  return std::atan2(fa.cross(fb).norm(), fa.dot(fb));
 }
 
 Eigen::VectorXd toVector(const BodyPose& pose)

@@ -1,0 +1,39 @@
+#ifndef ctNamedArrays_h
+#define ctNamedArrays_h
+// Small builders for the named arrays filters attach to their outputs. C++ only (not wrapped).
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkSmartPointer.h>
+
+namespace clothtrack
+{
+/// A new array called `name` with `components` per tuple and room for `tuples` tuples.
+template <class ArrayT>
+vtkSmartPointer<ArrayT> namedArray(const char* name, vtkIdType tuples = 0, int components = 1)
+{
+  auto array = vtkSmartPointer<ArrayT>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+/// Adds a one-value field array `name` to `data` (vtkDoubleArray).
+inline void addFieldValue(vtkFieldData* data, const char* name, double value)
+{
+  auto array = namedArray<vtkDoubleArray>(name, 1);
+  array->SetValue(0, value);
+  data->AddArray(array);
+}
+
+/// Adds a one-value field array `name` to `data` (vtkIntArray).
+inline void addFieldValue(vtkFieldData* data, const char* name, int value)
+{
+  auto array = namedArray<vtkIntArray>(name, 1);
+  array->SetValue(0, value);
+  data->AddArray(array);
+}
+} // namespace clothtrack
+
+#endif
