@@ -11,19 +11,11 @@
 // from f(t) to the ground-truth position of t's source point (the true surface point the
 // template vertex was captured from) in frame k; vertices more than 3 cm from any true surface
 // (surfaces the capture invented to close hidden regions) have no truth and are not counted.
-#include "ctBuiltinBodyModel.h"
-#include "ctCaptureSimulation.h"
-#include "ctMeshConversion.h"
-#include "ctSyntheticSequence.h"
+#include "BenchSequence.h"
 
 #include <clothtrack/Error.h>
-#include <clothtrack/FrameList.h>
-#include <clothtrack/LandmarkTransfer.h>
 #include <clothtrack/Parallel.h>
 #include <clothtrack/PatchCorrespondence.h>
-#include <clothtrack/TemplateSelection.h>
-#include <clothtrack/body/BodyFit.h>
-#include <clothtrack/body/OrientedLandmarks.h>
 
 #include <algorithm>
 #include <chrono>
@@ -33,54 +25,10 @@
 #include <string>
 
 using namespace clothtrack;
+using namespace clothtrack::bench;
 
 namespace
 {
-/// Template vertices further than this from the true surface have no ground truth: the capture
-/// closed a region cameras cannot see into (between the legs, inside a hem) with a surface of
-/// its own. They are left out of the errors (two voxels of the simulated capture).
-constexpr double kNoTruth = 0.03;
-
-double seconds(std::chrono::steady_clock::time_point since)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
-
-struct Sequence
-{
-  std::vector<TriangleMesh> truth;    ///< consistent connectivity
-  std::vector<TriangleMesh> captures; ///< independent meshes
-  std::vector<SourceMap> sources;     ///< capture vertex -> truth surface point
-  std::vector<std::vector<OrientedSurfacePoint>> landmarks;
-};
-
-std::vector<OrientedSurfacePoint> toSurfacePoints(const std::vector<TransferredLandmark>& t)
-{
-  std::vector<OrientedSurfacePoint> out;
-  for (size_t k = 0; k < t.size(); ++k)
-    if (t[k].valid)
-      out.push_back(
-          {static_cast<int>(k), t[k].point.face, t[k].point.bary, t[k].direction, t[k].offset});
-  return out;
-}
-
-void fittedLandmarks(Sequence& s)
-{
-  const BodyModel& model = builtinBodyModel();
-  std::vector<const TriangleMesh*> frames;
-  for (const auto& c : s.captures) frames.push_back(&c);
-  const auto start = std::chrono::steady_clock::now();
-  const BodyFitResult fit = fitBodySequence(model, frames);
-  std::printf("body fit: %.1f s\n", seconds(start));
-  for (size_t k = 0; k < s.captures.size(); ++k)
-  {
-    const TriangleMesh body = model.posed(fit.beta, fit.frames[k].pose);
-    const SurfaceLocator locator(s.captures[k]);
-    s.landmarks.push_back(
-        toSurfacePoints(transferLandmarks(orientedLandmarks(model, body), s.captures[k], locator)));
-  }
-}
-
 struct Stats
 {
   std::vector<double> errors;
@@ -107,9 +55,7 @@ struct Stats
 
 int evaluate(Sequence& s)
 {
-  std::vector<FrameTopology> topology;
-  for (const auto& c : s.captures) topology.push_back(frameTopology(c, 0.1));
-  const int j = selectTemplate(topology, {}).chosen;
+  const int j = chooseTemplate(s);
   const TriangleMesh& templ = s.captures[j];
   std::printf("template frame %d: %d vertices, %zu landmarks; %d threads\n", j, templ.numVertices(),
               s.landmarks[j].size(), threadCount());
@@ -122,8 +68,6 @@ int evaluate(Sequence& s)
   std::printf("eps %.3f m, tau_s %.2f m, tau_d %.2f m, seeds within %.2f m of the body\n",
               options.epsilon, options.minRadius, options.maxRadius, options.maxSeedOffset);
   std::printf("template preparation %.2f s\n", seconds(start));
-  // Ground truth of each template vertex: its source point on the truth of frame j.
-  const SourceMap& source = s.sources[j];
   Stats geodesic, baseline, baselineSame;
   double kept = 0, tried = 0, landmarkError = 0;
   int landmarkPairs = 0;
@@ -143,8 +87,8 @@ int evaluate(Sequence& s)
       for (const auto& f : s.landmarks[k])
         if (f.id == t.id)
         {
-          const int v = templ.F(t.face, 0);
-          const Vec3 truth = surfacePosition(s.truth[k], source.face[v], source.barycentric[v]);
+          Vec3 truth;
+          if (!s.truthOf(j, templ.F(t.face, 0), static_cast<int>(k), truth)) continue;
           const double e = (surfacePosition(s.captures[k], f.face, f.bary) - truth).norm();
           landmarkError += e;
           if (std::getenv("CLOTHTRACK_BENCH_VERBOSE") && k + 1 == s.captures.size())
@@ -156,9 +100,8 @@ int evaluate(Sequence& s)
     {
       std::map<int, std::pair<double, int>> byPatch;
       for (int v = 0; v < templ.numVertices(); ++v)
-        if (c.vertices[v].matched() && source.distance[v] <= kNoTruth)
+        if (Vec3 truth; c.vertices[v].matched() && s.truthOf(j, v, static_cast<int>(k), truth))
         {
-          const Vec3 truth = surfacePosition(s.truth[k], source.face[v], source.barycentric[v]);
           auto& e = byPatch[c.vertices[v].patchId];
           e.first += (c.vertices[v].position - truth).norm();
           ++e.second;
@@ -173,8 +116,8 @@ int evaluate(Sequence& s)
     }
     for (int v = 0; v < templ.numVertices(); ++v)
     {
-      if (source.distance[v] > kNoTruth) continue;
-      const Vec3 truth = surfacePosition(s.truth[k], source.face[v], source.barycentric[v]);
+      Vec3 truth;
+      if (!s.truthOf(j, v, static_cast<int>(k), truth)) continue;
       ++geodesic.vertices;
       ++baseline.vertices;
       ++baselineSame.vertices;
@@ -203,52 +146,13 @@ int evaluate(Sequence& s)
 
 int synthetic(const std::string& preset, int numFrames, bool trueLandmarks)
 {
-  const BodyModel& model = builtinBodyModel();
-  SyntheticOptions options;
-  options.preset = preset;
-  options.frames = numFrames;
-  Sequence s;
-  std::vector<TriangleMesh> bodies;
-  generateSyntheticSequence(model, options,
-                            [&](const SyntheticFrame& frame)
-                            {
-                              s.truth.push_back(frame.clothed);
-                              bodies.push_back(frame.body);
-                              SourceMap map;
-                              CaptureOptions capture;
-                              capture.seed = 1 + frame.index;
-                              s.captures.push_back(simulateCapture(frame.clothed, capture, &map));
-                              s.sources.push_back(std::move(map));
-                            });
-  if (trueLandmarks)
-    for (size_t k = 0; k < s.captures.size(); ++k)
-    {
-      const SurfaceLocator locator(s.captures[k]);
-      s.landmarks.push_back(toSurfacePoints(
-          transferLandmarks(orientedLandmarks(model, bodies[k]), s.captures[k], locator)));
-    }
-  else
-    fittedLandmarks(s);
-  std::printf("preset %s, %d frames, landmarks from the %s body\n", preset.c_str(), numFrames,
-              trueLandmarks ? "true" : "fitted");
+  Sequence s = syntheticSequence(preset, numFrames, trueLandmarks);
   return evaluate(s);
 }
 
 int remesh(const std::string& path, int stride)
 {
-  Sequence s;
-  const auto files = listFrames(path);
-  for (size_t i = 0; i < files.size(); i += stride)
-  {
-    s.truth.push_back(loadFrame(files[i], FrameConventions()));
-    SourceMap map;
-    CaptureOptions capture;
-    capture.seed = 1 + static_cast<unsigned>(i);
-    s.captures.push_back(simulateCapture(s.truth.back(), capture, &map));
-    s.sources.push_back(std::move(map));
-  }
-  std::printf("%s re-meshed: %zu frames (stride %d)\n", path.c_str(), s.captures.size(), stride);
-  fittedLandmarks(s);
+  Sequence s = directorySequence(path, stride, 0, true);
   return evaluate(s);
 }
 } // namespace

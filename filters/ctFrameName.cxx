@@ -1,7 +1,14 @@
 #include "ctFrameName.h"
 
+#include "ctMeshConversion.h"
+
+#include <clothtrack/Error.h>
+#include <clothtrack/MeshValidation.h>
+
 #include <vtkDataObject.h>
 #include <vtkFieldData.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
 namespace clothtrack
@@ -14,5 +21,28 @@ std::string frameName(vtkDataObject* block, int index)
             vtkStringArray::SafeDownCast(block->GetFieldData()->GetAbstractArray("SourceFile")))
       if (files->GetNumberOfValues() > 0) name += " (" + files->GetValue(0) + ")";
   return name;
+}
+
+TriangleMesh frameMesh(vtkMultiBlockDataSet* sequence, int index)
+{
+  vtkDataObject* block = sequence->GetBlock(static_cast<unsigned>(index));
+  const std::string name = frameName(block, index);
+  auto* poly = vtkPolyData::SafeDownCast(block);
+  if (!poly) throw Error(name + " is not a vtkPolyData");
+  TriangleMesh mesh = toTriangleMesh(poly, name);
+  validateMesh(mesh, name);
+  return mesh;
+}
+
+void checkOneBlockPerFrame(vtkMultiBlockDataSet* sequence, vtkMultiBlockDataSet* perFrame,
+                           const std::string& filter, const std::string& what)
+{
+  const unsigned n = sequence ? sequence->GetNumberOfBlocks() : 0u;
+  if (n == 0) throw Error(filter + ": the sequence has no frame");
+  if (!perFrame || perFrame->GetNumberOfBlocks() != n)
+    throw Error(filter + ": the " + what + " input must hold one block per frame (" +
+                std::to_string(n) + " frames, " +
+                std::to_string(perFrame ? perFrame->GetNumberOfBlocks() : 0u) + " " + what +
+                " blocks)");
 }
 } // namespace clothtrack

@@ -2,11 +2,9 @@
 
 #include "ctFrameName.h"
 #include "ctLandmarkPolyData.h"
-#include "ctMeshConversion.h"
 #include "ctNamedArrays.h"
 
 #include <clothtrack/Error.h>
-#include <clothtrack/MeshValidation.h>
 #include <clothtrack/PatchCorrespondence.h>
 #include <clothtrack/TemplateSelection.h>
 
@@ -98,31 +96,10 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
   using namespace clothtrack;
   auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
   auto* landmarkBlocks = vtkMultiBlockDataSet::GetData(inputVector[1], 0);
-  const int n = sequence ? static_cast<int>(sequence->GetNumberOfBlocks()) : 0;
-  if (n == 0)
-  {
-    vtkErrorMacro(<< "patch correspondence: the sequence has no frame");
-    return 0;
-  }
-  if (!landmarkBlocks || static_cast<int>(landmarkBlocks->GetNumberOfBlocks()) != n)
-  {
-    vtkErrorMacro(<< "patch correspondence: the landmarks input must hold one block per frame ("
-                  << n << " frames, " << (landmarkBlocks ? landmarkBlocks->GetNumberOfBlocks() : 0u)
-                  << " landmark blocks)");
-    return 0;
-  }
   try
   {
-    auto frameMesh = [&](int k)
-    {
-      vtkDataObject* block = sequence->GetBlock(static_cast<unsigned>(k));
-      const std::string name = frameName(block, k);
-      auto* poly = vtkPolyData::SafeDownCast(block);
-      if (!poly) throw Error(name + " is not a vtkPolyData");
-      TriangleMesh mesh = toTriangleMesh(poly, name);
-      validateMesh(mesh, name);
-      return mesh;
-    };
+    checkOneBlockPerFrame(sequence, landmarkBlocks, "patch correspondence", "landmarks");
+    const int n = static_cast<int>(sequence->GetNumberOfBlocks());
     auto frameLandmarks = [&](int k, const TriangleMesh& mesh)
     {
       auto* poly = vtkPolyData::SafeDownCast(landmarkBlocks->GetBlock(static_cast<unsigned>(k)));
@@ -138,13 +115,13 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
     if (chosen < 0)
     {
       std::vector<FrameTopology> criteria;
-      for (int k = 0; k < n; ++k) criteria.push_back(frameTopology(frameMesh(k), 0.1));
+      for (int k = 0; k < n; ++k) criteria.push_back(frameTopology(frameMesh(sequence, k), 0.1));
       chosen = selectTemplate(criteria, {}).chosen;
     }
     this->ChosenFrame = chosen;
     this->UpdateProgress(0.05);
     auto* templateData = vtkPolyData::SafeDownCast(sequence->GetBlock(chosen));
-    const TriangleMesh templateMesh = frameMesh(chosen);
+    const TriangleMesh templateMesh = frameMesh(sequence, chosen);
     const std::vector<OrientedSurfacePoint> templateLandmarks =
         frameLandmarks(chosen, templateMesh);
     if (templateLandmarks.empty())
@@ -187,7 +164,7 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
       }
       else
       {
-        const TriangleMesh frame = frameMesh(k);
+        const TriangleMesh frame = frameMesh(sequence, k);
         const std::vector<OrientedSurfacePoint> landmarks = frameLandmarks(k, frame);
         if (landmarks.empty())
           vtkWarningMacro(<< "patch correspondence: " << frameName(sequence->GetBlock(k), k)

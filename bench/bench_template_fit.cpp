@@ -1,0 +1,216 @@
+// Template fitting (stage 3) against ground truth: the whole pipeline (body fit, landmarks,
+// automatic template, geodesic-patch correspondence, template fit) on a sequence, then the
+// distance of every aligned template vertex to the true position of the same point.
+//   bench_template_fit samba DIR [options]        the sequence as it is (the paper's protocol:
+//                                                 template vertex i is vertex i of the truth)
+//   bench_template_fit remesh DIR [options]       re-meshed by the capture simulator (truth through
+//                                                 each template vertex's source point)
+//   bench_template_fit synthetic PRESET FRAMES [options]
+// options: --stride S, --frames N (first N after the stride), --variants LIST (comma separated,
+// of exact, lbfgs, no-ec, no-ed, lbfgs-no-ec; default exact), --rounds R (nearest-point rounds per
+// stage), --curve FILE (per-frame mean error of each variant, CSV).
+#include "BenchSequence.h"
+
+#include <clothtrack/Error.h>
+#include <clothtrack/Parallel.h>
+#include <clothtrack/PatchCorrespondence.h>
+#include <clothtrack/TemplateFit.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+using namespace clothtrack;
+using namespace clothtrack::bench;
+
+namespace
+{
+struct Variant
+{
+  std::string name;
+  TemplateFitOptions options;
+};
+
+int roundsPerStage = 0; // 0: the default
+
+Variant variant(const std::string& name)
+{
+  Variant v{name, {}};
+  if (roundsPerStage > 0) v.options.roundsPerStage = roundsPerStage;
+  if (name == "lbfgs" || name == "lbfgs-no-ec") v.options.solver = FitSolver::LBFGS;
+  if (name == "no-ec" || name == "lbfgs-no-ec") v.options.useCorrespondence = false;
+  if (name == "no-ed") v.options.useNearest = false;
+  if (name != "exact" && name != "lbfgs" && name != "no-ec" && name != "no-ed" &&
+      name != "lbfgs-no-ec")
+    throw Error("unknown variant '" + name + "'");
+  return v;
+}
+
+struct Summary
+{
+  double mean = 0, p90 = 0, within10 = 0, worstFrame = 0, secondsPerFrame = 0;
+  std::vector<double> perFrame;
+};
+
+Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
+{
+  Summary out;
+  std::vector<double> errors;
+  out.perFrame.assign(fits.size(), 0.0);
+  double time = 0;
+  for (size_t k = 0; k < fits.size(); ++k)
+  {
+    if (static_cast<int>(k) == j) continue;
+    time += fits[k].seconds;
+    double sum = 0;
+    int count = 0;
+    for (int v = 0; v < fits[k].positions.rows(); ++v)
+    {
+      Vec3 truth;
+      if (!s.truthOf(j, v, static_cast<int>(k), truth)) continue;
+      const double e = (fits[k].positions.row(v).transpose() - truth).norm();
+      errors.push_back(e);
+      sum += e;
+      ++count;
+    }
+    out.perFrame[k] = sum / std::max(1, count);
+    out.worstFrame = std::max(out.worstFrame, out.perFrame[k]);
+  }
+  for (double e : errors) out.mean += e, out.within10 += e <= 0.10;
+  out.mean /= std::max<size_t>(1, errors.size());
+  out.within10 *= 100.0 / std::max<size_t>(1, errors.size());
+  if (!errors.empty())
+  {
+    std::nth_element(errors.begin(), errors.begin() + errors.size() * 9 / 10, errors.end());
+    out.p90 = errors[errors.size() * 9 / 10];
+  }
+  out.secondsPerFrame = time / std::max<size_t>(1, fits.size() - 1);
+  return out;
+}
+
+int run(Sequence& s, const std::vector<std::string>& variants, const std::string& curve)
+{
+  const int j = chooseTemplate(s);
+  const TriangleMesh& templ = s.captures[j];
+  std::printf("template frame %d: %d vertices, %d faces; %d threads\n", j, templ.numVertices(),
+              templ.numFaces(), threadCount());
+  auto start = std::chrono::steady_clock::now();
+  const TemplatePatches patches(templ, s.landmarks[j]);
+  std::vector<VertexTargets> targets(s.captures.size());
+  double matched = 0;
+  for (size_t k = 0; k < s.captures.size(); ++k)
+  {
+    if (static_cast<int>(k) == j) continue;
+    const FrameCorrespondence c = patches.correspond(s.captures[k], s.landmarks[k]);
+    VertexTargets& t = targets[k];
+    t.position.resize(templ.numVertices(), 3);
+    t.matched.assign(templ.numVertices(), 0);
+    for (int v = 0; v < templ.numVertices(); ++v)
+      if (c.vertices[v].matched())
+      {
+        t.matched[v] = 1;
+        t.position.row(v) = c.vertices[v].position.transpose();
+      }
+    matched += c.matchedFraction();
+  }
+  const int frames = static_cast<int>(s.captures.size());
+  std::printf("correspondence: %.2f s/frame, %.1f %% of template vertices matched\n",
+              seconds(start) / std::max(1, frames - 1), 100 * matched / std::max(1, frames - 1));
+  std::printf(
+      "| variant | mean error | p90 | within 10 cm | worst frame mean | fit time/frame |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  std::map<std::string, Summary> results;
+  for (const std::string& name : variants)
+  {
+    const Variant v = variant(name);
+    const auto fits = fitTemplateSequence(
+        templ, j, frames, [&](int k) -> const TriangleMesh& { return s.captures[k]; },
+        [&](int k) { return &targets[k]; }, v.options);
+    const Summary r = evaluate(s, j, fits);
+    std::printf("| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s |\n", name.c_str(),
+                100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame, r.secondsPerFrame);
+    std::fflush(stdout);
+    results[name] = r;
+  }
+  if (!curve.empty())
+  {
+    std::ofstream out(curve);
+    out << "frame";
+    for (const auto& name : variants) out << "," << name;
+    out << "\n";
+    for (int k = 0; k < frames; ++k)
+    {
+      out << k;
+      for (const auto& name : variants) out << "," << results[name].perFrame[k];
+      out << "\n";
+    }
+    std::printf("per-frame mean errors (m) written to %s\n", curve.c_str());
+  }
+  return 0;
+}
+
+std::vector<std::string> split(const std::string& list)
+{
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    int stride = 1, maxFrames = 0;
+    std::vector<std::string> variants = {"exact"};
+    std::string curve;
+    std::vector<std::string> positional;
+    for (size_t i = 0; i < args.size(); ++i)
+    {
+      auto value = [&]()
+      {
+        if (i + 1 >= args.size()) throw Error(args[i] + " needs a value");
+        return args[++i];
+      };
+      if (args[i] == "--stride")
+        stride = std::max(1, std::stoi(value()));
+      else if (args[i] == "--frames")
+        maxFrames = std::stoi(value());
+      else if (args[i] == "--variants")
+        variants = split(value());
+      else if (args[i] == "--curve")
+        curve = value();
+      else if (args[i] == "--rounds")
+        roundsPerStage = std::stoi(value());
+      else
+        positional.push_back(args[i]);
+    }
+    for (const auto& v : variants) variant(v); // reject unknown names before the long work
+    const std::string mode = positional.empty() ? "" : positional[0];
+    if ((mode == "samba" || mode == "remesh") && positional.size() == 2)
+    {
+      Sequence s = directorySequence(positional[1], stride, maxFrames, mode == "remesh");
+      return run(s, variants, curve);
+    }
+    if (mode == "synthetic" && positional.size() == 3)
+    {
+      Sequence s = syntheticSequence(positional[1], std::stoi(positional[2]), false);
+      return run(s, variants, curve);
+    }
+    std::fprintf(stderr, "usage: bench_template_fit samba|remesh DIR | synthetic PRESET FRAMES "
+                         "[--stride S] [--frames N] [--variants exact,lbfgs,no-ec,no-ed] "
+                         "[--curve FILE]\n");
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    std::fprintf(stderr, "bench_template_fit: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,486 @@
+#include "TemplateFit.h"
+
+#include "Error.h"
+#include "MeshTopology.h"
+#include "MeshValidation.h"
+#include "Parallel.h"
+#include "SurfaceLocator.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <string>
+
+namespace clothtrack
+{
+namespace
+{
+// Unknowns: X, 4N x 3, rows 4i..4i+3 hold the transposed affine map of vertex i, so that the
+// deformed vertex is X_i^T [t_i; 1]. Its first three rows are the linear part, the fourth the
+// translation; the identity map is [I3; 0].
+using Unknowns = Eigen::Matrix<double, Eigen::Dynamic, 3>;
+using SparseMatrix = Eigen::SparseMatrix<double>;
+// Factors serve as preconditioners only (conjugate gradients run in double precision), so
+// single precision halves their memory and the time of a solve, which reads the whole factor.
+using FactorMatrix = Eigen::SparseMatrix<float>;
+using Cholesky = Eigen::SimplicialLLT<FactorMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>;
+
+Unknowns identityMaps(int n)
+{
+  Unknowns X = Unknowns::Zero(4 * static_cast<Eigen::Index>(n), 3);
+  for (int i = 0; i < n; ++i) X.block<3, 3>(4 * i, 0).setIdentity();
+  return X;
+}
+
+double dot(const Unknowns& a, const Unknowns& b)
+{
+  return (a.array() * b.array()).sum();
+}
+
+double seconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+} // namespace
+
+int VertexTargets::count() const
+{
+  return static_cast<int>(std::count(matched.begin(), matched.end(), 1));
+}
+
+/// Sparse Cholesky factor of a normal matrix, with a solve that runs the three right-hand sides
+/// together (one pass over the factor instead of three).
+struct Factor
+{
+  Cholesky cholesky;
+  bool ready = false;
+
+  explicit Factor(const SparseMatrix& pattern) { cholesky.analyzePattern(pattern.cast<float>()); }
+
+  void factorise(const SparseMatrix& H)
+  {
+    cholesky.factorize(H.cast<float>());
+    ready = cholesky.info() == Eigen::Success;
+    if (!ready) throw Error("Template fit: the normal equations are not positive definite.");
+  }
+
+  Unknowns solve(const Unknowns& rhs) const
+  {
+    const FactorMatrix& L = cholesky.matrixL().nestedExpression();
+    const Eigen::Index n = rhs.rows();
+    Points y(n, 3);
+    const auto& P = cholesky.permutationP();
+    for (Eigen::Index i = 0; i < n; ++i) y.row(P.indices()[i]) = rhs.row(i);
+    const int* outer = L.outerIndexPtr();
+    const int* inner = L.innerIndexPtr();
+    const float* value = L.valuePtr();
+    // Each column of L starts with its diagonal entry.
+    for (Eigen::Index j = 0; j < n; ++j)
+    {
+      const Eigen::RowVector3d yj = y.row(j) / double(value[outer[j]]);
+      y.row(j) = yj;
+      for (int k = outer[j] + 1; k < outer[j + 1]; ++k) y.row(inner[k]) -= double(value[k]) * yj;
+    }
+    for (Eigen::Index j = n - 1; j >= 0; --j)
+    {
+      Eigen::RowVector3d yj = y.row(j);
+      for (int k = outer[j] + 1; k < outer[j + 1]; ++k) yj -= double(value[k]) * y.row(inner[k]);
+      y.row(j) = yj / double(value[outer[j]]);
+    }
+    Unknowns x(n, 3);
+    for (Eigen::Index i = 0; i < n; ++i) x.row(i) = y.row(P.indices()[i]);
+    return x;
+  }
+};
+
+/// One round's quadratic: E(X) = tr(X^T H X) - 2 tr(X^T R) + c, H stored as its lower triangle.
+struct Quadratic
+{
+  SparseMatrix H;
+  Unknowns R;
+  double c = 0.0;
+
+  Unknowns times(const Unknowns& X) const { return H.selfadjointView<Eigen::Lower>() * X; }
+  double energy(const Unknowns& X) const { return dot(X, times(X)) - 2.0 * dot(X, R) + c; }
+};
+
+struct TemplateFitter::Impl
+{
+  int n = 0;
+  std::vector<std::array<int, 2>> edges;
+  std::vector<int> degree;
+  int neighbourCount = 0; // sum of |N(i)|
+  std::vector<std::array<int, 3>> faces;
+  // Storage index in H.valuePtr() of the lower diagonal block entries (10 per vertex) and of
+  // the four diagonal entries of each edge's off-diagonal block: H's pattern never changes.
+  std::vector<std::array<int, 10>> diagonalSlots;
+  std::vector<std::array<int, 4>> edgeSlots;
+  SparseMatrix pattern;
+  // One numeric factorisation per stage, kept across rounds and frames: the normal equations
+  // change little from one round to the next (a few nearest points) or from one frame to the
+  // next (the template moved a little), so the old factor preconditions conjugate gradients that
+  // reach the new solution in a few steps. A factor is renewed when they need too many.
+  // fit() is therefore not reentrant.
+  mutable std::vector<std::unique_ptr<Factor>> factors;
+
+  explicit Impl(const TriangleMesh& mesh)
+  {
+    n = mesh.numVertices();
+    const MeshTopology topology = buildTopology(mesh);
+    edges = topology.edges;
+    degree.assign(n, 0);
+    for (const auto& e : edges) ++degree[e[0]], ++degree[e[1]];
+    neighbourCount = 2 * static_cast<int>(edges.size());
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(10 * static_cast<size_t>(n) + 4 * edges.size());
+    for (int i = 0; i < n; ++i)
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c <= r; ++c) entries.emplace_back(4 * i + r, 4 * i + c, 1.0);
+    for (const auto& e : edges)
+      for (int r = 0; r < 4; ++r) entries.emplace_back(4 * e[1] + r, 4 * e[0] + r, 1.0);
+    pattern.resize(4 * n, 4 * n);
+    pattern.setFromTriplets(entries.begin(), entries.end());
+    pattern.makeCompressed();
+    auto slot = [&](int row, int col)
+    { return static_cast<int>(&pattern.coeffRef(row, col) - pattern.valuePtr()); };
+    diagonalSlots.resize(n);
+    for (int i = 0; i < n; ++i)
+    {
+      int k = 0;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c <= r; ++c) diagonalSlots[i][k++] = slot(4 * i + r, 4 * i + c);
+    }
+    edgeSlots.resize(edges.size());
+    for (size_t e = 0; e < edges.size(); ++e)
+      for (int r = 0; r < 4; ++r) edgeSlots[e][r] = slot(4 * edges[e][1] + r, 4 * edges[e][0] + r);
+  }
+
+  /// Solves H X = R to a relative residual of 1e-6 with the factor of `stage`; returns the
+  /// conjugate-gradient steps.
+  int solveExact(const Quadratic& q, Unknowns& X, size_t stage, bool mayRefactor = true) const
+  {
+    constexpr int kMaxSteps = 20;
+    constexpr double kTolerance = 1e-6;
+    if (factors.size() <= stage) factors.resize(stage + 1);
+    std::unique_ptr<Factor>& factor = factors[stage];
+    auto refactor = [&]()
+    {
+      if (!factor) factor = std::make_unique<Factor>(pattern);
+      factor->factorise(q.H);
+    };
+    if (!factor || !factor->ready) refactor();
+    const double target = kTolerance * q.R.norm();
+    Unknowns r = q.R - q.times(X);
+    Unknowns z = factor->solve(r);
+    Unknowns p = z;
+    double rz = dot(r, z);
+    int step = 0;
+    for (; step < kMaxSteps && r.norm() > target; ++step)
+    {
+      const Unknowns Hp = q.times(p);
+      const double alpha = rz / dot(p, Hp);
+      X += alpha * p;
+      r -= alpha * Hp;
+      z = factor->solve(r);
+      const double rzNext = dot(r, z);
+      p = z + (rzNext / rz) * p;
+      rz = rzNext;
+    }
+    if (r.norm() > target && mayRefactor)
+    {
+      // Too far from the factored matrix: renew the factor and finish from here.
+      refactor();
+      return step + solveExact(q, X, stage, false);
+    }
+    return step;
+  }
+
+  /// The quadratic of one round. `b` holds [t_i - centroid; 1]; targets are relative to the
+  /// centroid too; weights already include the 1/count normalisations.
+  Quadratic assemble(const Eigen::Matrix<double, Eigen::Dynamic, 4>& b,
+                     const std::vector<unsigned char>& hasCorrespondence,
+                     const Points& correspondence, double correspondenceWeight,
+                     const std::vector<unsigned char>& hasNearest, const Points& nearest,
+                     double nearestWeight, double smoothnessWeight, double temporalWeight) const
+  {
+    Quadratic q;
+    q.H = pattern;
+    double* values = q.H.valuePtr();
+    std::fill(values, values + q.H.nonZeros(), 0.0);
+    q.R = Unknowns::Zero(4 * static_cast<Eigen::Index>(n), 3);
+    // Each neighbour pair appears twice in sum_i sum_{j in N(i)}, hence the factor 2.
+    const double edgeWeight = 2.0 * smoothnessWeight;
+    for (size_t e = 0; e < edges.size(); ++e)
+      for (int r = 0; r < 4; ++r) values[edgeSlots[e][r]] = -edgeWeight;
+    std::vector<double> constant(n, 0.0);
+    parallelFor(0, n,
+                [&](int i)
+                {
+                  Eigen::Matrix4d block =
+                      Eigen::Matrix4d::Identity() * (edgeWeight * degree[i] + temporalWeight);
+                  Eigen::Matrix<double, 4, 3> rhs = Eigen::Matrix<double, 4, 3>::Zero();
+                  rhs.topRows<3>().setIdentity();
+                  rhs *= temporalWeight;
+                  double c = 3.0 * temporalWeight;
+                  const Eigen::Vector4d bi = b.row(i).transpose();
+                  auto addPoint = [&](double w, const Vec3& target)
+                  {
+                    block += w * bi * bi.transpose();
+                    rhs += w * bi * target.transpose();
+                    c += w * target.squaredNorm();
+                  };
+                  if (correspondenceWeight > 0 && hasCorrespondence[i])
+                    addPoint(correspondenceWeight, correspondence.row(i).transpose());
+                  if (nearestWeight > 0 && hasNearest[i])
+                    addPoint(nearestWeight, nearest.row(i).transpose());
+                  int k = 0;
+                  for (int r = 0; r < 4; ++r)
+                    for (int col = 0; col <= r; ++col)
+                      values[diagonalSlots[i][k++]] = block(r, col);
+                  q.R.middleRows<4>(4 * i) = rhs;
+                  constant[i] = c;
+                });
+    for (double c : constant) q.c += c;
+    return q;
+  }
+};
+
+namespace
+{
+/// Limited-memory BFGS on a quadratic, with the exact line search a quadratic allows.
+int minimiseLBFGS(const Quadratic& q, Unknowns& X, int iterations)
+{
+  constexpr int kMemory = 10;
+  std::deque<Unknowns> s, y;
+  std::deque<double> rho;
+  Unknowns g = 2.0 * (q.times(X) - q.R);
+  const double g0 = g.norm();
+  int done = 0;
+  for (; done < iterations; ++done)
+  {
+    if (g.norm() <= 1e-12 * std::max(1.0, g0)) break;
+    // Two-loop recursion: d = -H_k g.
+    Unknowns d = -g;
+    std::vector<double> alpha(s.size());
+    for (int k = static_cast<int>(s.size()) - 1; k >= 0; --k)
+    {
+      alpha[k] = rho[k] * dot(s[k], d);
+      d -= alpha[k] * y[k];
+    }
+    if (!s.empty()) d *= dot(s.back(), y.back()) / dot(y.back(), y.back());
+    for (size_t k = 0; k < s.size(); ++k)
+    {
+      const double beta = rho[k] * dot(y[k], d);
+      d += (alpha[k] - beta) * s[k];
+    }
+    const Unknowns Hd = q.times(d);
+    const double curvature = 2.0 * dot(d, Hd);
+    const double slope = dot(g, d);
+    if (!(curvature > 0) || slope >= 0) break;
+    const double step = -slope / curvature;
+    const Unknowns sk = step * d;
+    const Unknowns yk = 2.0 * step * Hd;
+    X += sk;
+    g += yk;
+    const double sy = dot(sk, yk);
+    if (sy <= 0) break;
+    s.push_back(sk);
+    y.push_back(yk);
+    rho.push_back(1.0 / sy);
+    if (static_cast<int>(s.size()) > kMemory) s.pop_front(), y.pop_front(), rho.pop_front();
+  }
+  return done;
+}
+
+void checkOptions(const TemplateFitOptions& o)
+{
+  if (o.stages.empty()) throw Error("Template fit: no stage given.");
+  for (const auto& s : o.stages)
+  {
+    const double w[] = {s.correspondence, s.smoothness, s.nearest, s.temporal};
+    for (double x : w)
+      if (!(x >= 0) || !std::isfinite(x))
+        throw Error("Template fit: stage weights must be finite and non-negative.");
+    if (!(s.temporal > 0) && !(s.smoothness > 0))
+      throw Error("Template fit: every stage needs a positive smoothness or temporal weight, "
+                  "otherwise vertices without data are undetermined.");
+  }
+  if (o.roundsPerStage < 1) throw Error("Template fit: roundsPerStage must be at least 1.");
+  if (o.nearestEvery < 1) throw Error("Template fit: nearestEvery must be at least 1.");
+  if (!(o.maxNearestDistance > 0)) throw Error("Template fit: maxNearestDistance must be > 0.");
+  if (!(o.maxNormalAngle > 0 && o.maxNormalAngle <= 180))
+    throw Error("Template fit: maxNormalAngle must be in (0, 180] degrees.");
+}
+} // namespace
+
+TemplateFitter::TemplateFitter(const TriangleMesh& templateMesh, const TemplateFitOptions& options)
+    : options_(options)
+{
+  checkOptions(options_);
+  validateMesh(templateMesh, "Template");
+  impl_ = std::make_unique<Impl>(templateMesh);
+  impl_->faces.resize(templateMesh.numFaces());
+  for (int f = 0; f < templateMesh.numFaces(); ++f)
+    impl_->faces[f] = {templateMesh.F(f, 0), templateMesh.F(f, 1), templateMesh.F(f, 2)};
+}
+
+TemplateFitter::~TemplateFitter() = default;
+
+FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
+                             const VertexTargets* targets) const
+{
+  const auto clock = std::chrono::steady_clock::now();
+  const Impl& m = *impl_;
+  const int n = m.n;
+  if (start.rows() != n)
+    throw Error("Template fit: the start positions have " + std::to_string(start.rows()) +
+                " vertices, the template " + std::to_string(n) + ".");
+  if (!start.allFinite()) throw Error("Template fit: the start positions are not finite.");
+  validateMesh(frame, "Frame");
+  if (targets && (targets->position.rows() != n || static_cast<int>(targets->matched.size()) != n))
+    throw Error("Template fit: the correspondences do not have one entry per template vertex.");
+
+  const Vec3 centroid = start.colwise().mean().transpose();
+  Eigen::Matrix<double, Eigen::Dynamic, 4> b(n, 4);
+  b.leftCols<3>() = start.rowwise() - centroid.transpose();
+  b.col(3).setOnes();
+
+  FrameFit result;
+  result.used.assign(n, 0);
+  Points correspondence = Points::Zero(n, 3);
+  if (targets && options_.useCorrespondence)
+    for (int i = 0; i < n; ++i)
+      if (targets->matched[i] && targets->position.row(i).allFinite())
+      {
+        result.used[i] = 1;
+        correspondence.row(i) = targets->position.row(i) - centroid.transpose();
+      }
+  const int correspondenceCount =
+      static_cast<int>(std::count(result.used.begin(), result.used.end(), 1));
+
+  const SurfaceLocator locator(frame);
+  const Points frameNormals = faceNormals(frame);
+  const double minCosine = std::cos(options_.maxNormalAngle * M_PI / 180.0);
+  std::vector<int> hint(n, -1);
+  std::vector<unsigned char> hasNearest(n, 0);
+  Points nearest = Points::Zero(n, 3);
+  TriangleMesh deformed;
+  deformed.F.resize(static_cast<Eigen::Index>(m.faces.size()), 3);
+  for (size_t f = 0; f < m.faces.size(); ++f)
+    deformed.F.row(f) << m.faces[f][0], m.faces[f][1], m.faces[f][2];
+
+  Unknowns X = identityMaps(n);
+  auto positions = [&](const Unknowns& maps)
+  {
+    Points p(n, 3);
+    for (int i = 0; i < n; ++i)
+      p.row(i) = b.row(i) * maps.middleRows<4>(4 * static_cast<Eigen::Index>(i));
+    return p;
+  };
+  auto findNearest = [&](const Points& p)
+  {
+    deformed.V = p;
+    const Points normals = vertexNormals(deformed);
+    parallelFor(0, n,
+                [&](int i)
+                {
+                  const Vec3 query = p.row(i).transpose() + centroid;
+                  const SurfacePoint s =
+                      locator.closestPoint(query, options_.maxNearestDistance, hint[i]);
+                  hasNearest[i] = 0;
+                  if (!s.valid()) return;
+                  hint[i] = s.face;
+                  if (normals.row(i).dot(frameNormals.row(s.face)) <= minCosine) return;
+                  hasNearest[i] = 1;
+                  nearest.row(i) = (s.position - centroid).transpose();
+                });
+    return static_cast<int>(std::count(hasNearest.begin(), hasNearest.end(), 1));
+  };
+
+  const bool anyCorrespondence = correspondenceCount > 0;
+  for (size_t stageIndex = 0; stageIndex < options_.stages.size(); ++stageIndex)
+  {
+    const FitStage& stage = options_.stages[stageIndex];
+    const bool usesNearest = options_.useNearest && stage.nearest > 0;
+    const double wc = anyCorrespondence ? stage.correspondence / correspondenceCount : 0.0;
+    const double ws = m.neighbourCount > 0 ? stage.smoothness / m.neighbourCount : 0.0;
+    const double wt = stage.temporal / n;
+    const int rounds = usesNearest ? options_.roundsPerStage : 1;
+    for (int round = 0; round < rounds; ++round)
+    {
+      Points before = positions(X);
+      double wd = 0.0;
+      if (usesNearest)
+      {
+        result.nearestValid = findNearest(before);
+        wd = result.nearestValid > 0 ? stage.nearest / result.nearestValid : 0.0;
+      }
+      const Quadratic q =
+          m.assemble(b, result.used, correspondence, wc, hasNearest, nearest, wd, ws, wt);
+      if (options_.solver == FitSolver::Exact)
+        result.iterations += m.solveExact(q, X, stageIndex);
+      else
+        result.iterations += minimiseLBFGS(q, X, options_.nearestEvery);
+      ++result.rounds;
+      result.energy = q.energy(X);
+      const double moved = (positions(X) - before).rowwise().norm().maxCoeff();
+      if (options_.solver == FitSolver::Exact && moved < options_.convergence) break;
+    }
+  }
+  result.positions = positions(X).rowwise() + centroid.transpose();
+  if (!result.positions.allFinite()) throw Error("Template fit: the solve diverged.");
+  result.surfaceDistance.resize(n);
+  parallelFor(0, n,
+              [&](int i)
+              {
+                result.surfaceDistance[i] =
+                    locator
+                        .closestPoint(result.positions.row(i).transpose(),
+                                      std::numeric_limits<double>::infinity(), hint[i])
+                        .distance;
+              });
+  result.seconds = seconds(clock);
+  return result;
+}
+
+std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int templateFrame,
+                                          int numFrames,
+                                          const std::function<const TriangleMesh&(int)>& frame,
+                                          const std::function<const VertexTargets*(int)>& targets,
+                                          const TemplateFitOptions& options,
+                                          const std::function<bool(int, int)>& progress)
+{
+  if (templateFrame < 0 || templateFrame >= numFrames)
+    throw Error("Template fit: the template frame " + std::to_string(templateFrame) +
+                " is not in the sequence of " + std::to_string(numFrames) + " frames.");
+  const TemplateFitter fitter(templateMesh, options);
+  std::vector<FrameFit> fits(numFrames);
+  fits[templateFrame].positions = templateMesh.V;
+  fits[templateFrame].used.assign(templateMesh.numVertices(), 0);
+  fits[templateFrame].surfaceDistance = Eigen::VectorXd::Zero(templateMesh.numVertices());
+  int done = 1;
+  auto step = [&](int k, int from)
+  {
+    if (progress && !progress(done, numFrames)) throw Error("Template fit: cancelled.");
+    try
+    {
+      fits[k] = fitter.fit(fits[from].positions, frame(k), targets(k));
+    }
+    catch (const Error& e)
+    {
+      throw Error("Frame " + std::to_string(k) + ": " + e.what());
+    }
+    ++done;
+  };
+  for (int k = templateFrame - 1; k >= 0; --k) step(k, k + 1);
+  for (int k = templateFrame + 1; k < numFrames; ++k) step(k, k - 1);
+  if (progress) progress(done, numFrames);
+  return fits;
+}
+} // namespace clothtrack

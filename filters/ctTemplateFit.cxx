@@ -1,0 +1,256 @@
+#include "ctTemplateFit.h"
+
+#include "ctFrameName.h"
+#include "ctNamedArrays.h"
+
+#include <clothtrack/Error.h>
+#include <clothtrack/TemplateFit.h>
+
+#include <vtkCharArray.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkTable.h>
+
+#include <cmath>
+
+vtkStandardNewMacro(ctTemplateFit);
+
+namespace
+{
+using clothtrack::namedArray;
+
+/// The correspondence of one frame from a ctPatchCorrespondence block.
+clothtrack::VertexTargets targetsOf(vtkPolyData* block, int n, const std::string& name)
+{
+  using clothtrack::Error;
+  if (!block || block->GetNumberOfPoints() != n)
+    throw Error("the correspondence of " + name + " does not have one point per template vertex");
+  vtkDataArray* matched = block->GetPointData()->GetArray("Matched");
+  vtkDataArray* position = block->GetPointData()->GetArray("TargetPosition");
+  if (!matched || !position || position->GetNumberOfComponents() != 3)
+    throw Error("the correspondence of " + name +
+                " lacks the Matched or TargetPosition array (use ctPatchCorrespondence)");
+  clothtrack::VertexTargets t;
+  t.position.resize(n, 3);
+  t.matched.assign(n, 0);
+  for (int v = 0; v < n; ++v)
+  {
+    if (matched->GetComponent(v, 0) == 0) continue;
+    double p[3];
+    position->GetTuple(v, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      throw Error("the correspondence of " + name + " has a non-finite target at vertex " +
+                  std::to_string(v));
+    t.matched[v] = 1;
+    t.position.row(v) << p[0], p[1], p[2];
+  }
+  return t;
+}
+
+vtkSmartPointer<vtkPolyData> alignedPolyData(vtkPolyData* templateData,
+                                             const clothtrack::TriangleMesh& templateMesh,
+                                             const clothtrack::FrameFit& fit)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->CopyStructure(templateData);
+  const vtkIdType n = templateMesh.numVertices();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  auto displacement = namedArray<vtkDoubleArray>("Displacement", n, 3);
+  auto used = namedArray<vtkCharArray>("CorrespondenceUsed", n);
+  auto distance = namedArray<vtkDoubleArray>("SurfaceDistance", n);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    const clothtrack::Vec3 p = fit.positions.row(v).transpose();
+    const clothtrack::Vec3 d = p - templateMesh.vertex(static_cast<int>(v));
+    points->SetPoint(v, p.data());
+    displacement->SetTuple3(v, d[0], d[1], d[2]);
+    used->SetValue(v, fit.used.empty() ? 0 : fit.used[v]);
+    distance->SetValue(v, fit.surfaceDistance.size() ? fit.surfaceDistance[v] : 0.0);
+  }
+  out->SetPoints(points);
+  out->GetPointData()->AddArray(displacement);
+  out->GetPointData()->AddArray(used);
+  out->GetPointData()->AddArray(distance);
+  return out;
+}
+} // namespace
+
+ctTemplateFit::ctTemplateFit()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+  this->SetDefaultStages();
+}
+
+void ctTemplateFit::AddStage(double correspondence, double smoothness, double nearest,
+                             double temporal)
+{
+  this->Stages.push_back({correspondence, smoothness, nearest, temporal});
+  this->Modified();
+}
+
+void ctTemplateFit::RemoveAllStages()
+{
+  this->Stages.clear();
+  this->Modified();
+}
+
+void ctTemplateFit::SetDefaultStages()
+{
+  this->Stages.clear();
+  for (const clothtrack::FitStage& s : clothtrack::TemplateFitOptions().stages)
+    this->Stages.push_back({s.correspondence, s.smoothness, s.nearest, s.temporal});
+  this->Modified();
+}
+
+vtkTable* ctTemplateFit::GetSummaryOutput()
+{
+  return vtkTable::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+int ctTemplateFit::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
+  return 1;
+}
+
+int ctTemplateFit::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 1 ? "vtkTable" : "vtkMultiBlockDataSet");
+  return 1;
+}
+
+int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                               vtkInformationVector* outputVector)
+{
+  using namespace clothtrack;
+  auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
+  auto* correspondence = vtkMultiBlockDataSet::GetData(inputVector[1], 0);
+  try
+  {
+    checkOneBlockPerFrame(sequence, correspondence, "template fit", "correspondence");
+    const int n = static_cast<int>(sequence->GetNumberOfBlocks());
+    auto* first = vtkPolyData::SafeDownCast(correspondence->GetBlock(0));
+    vtkDataArray* templateField =
+        first ? first->GetFieldData()->GetArray("TemplateFrame") : nullptr;
+    if (!templateField)
+      throw Error("template fit: the correspondence blocks carry no TemplateFrame (use "
+                  "ctPatchCorrespondence)");
+    const int j = static_cast<int>(templateField->GetComponent(0, 0));
+    if (j < 0 || j >= n)
+      throw Error("template fit: the template frame " + std::to_string(j) +
+                  " is not in the sequence");
+    // The template is frame j itself: its geometry, with the correspondence's connectivity.
+    const TriangleMesh templateMesh = frameMesh(sequence, j);
+    auto* templateData = vtkPolyData::SafeDownCast(sequence->GetBlock(j));
+    const int nv = templateMesh.numVertices();
+
+    TemplateFitOptions options;
+    options.stages.clear();
+    for (const auto& s : this->Stages) options.stages.push_back({s[0], s[1], s[2], s[3]});
+    options.solver = this->Solver == LBFGS ? FitSolver::LBFGS : FitSolver::Exact;
+    options.roundsPerStage = this->RoundsPerStage;
+    options.nearestEvery = this->NearestEvery;
+    options.maxNearestDistance = this->MaximumNearestDistance;
+    options.maxNormalAngle = this->MaximumNormalAngle;
+    options.useCorrespondence = this->UseCorrespondence;
+    options.useNearest = this->UseNearest;
+
+    // Frames and correspondences are converted when their turn comes; only the current one is
+    // held besides the results.
+    TriangleMesh frame;
+    VertexTargets targets;
+    auto frameAt = [&](int k) -> const TriangleMesh&
+    {
+      frame = frameMesh(sequence, k);
+      return frame;
+    };
+    auto targetsAt = [&](int k) -> const VertexTargets*
+    {
+      const std::string name = frameName(sequence->GetBlock(k), k);
+      targets = targetsOf(vtkPolyData::SafeDownCast(correspondence->GetBlock(k)), nv, name);
+      if (targets.count() == 0)
+        vtkWarningMacro(<< "template fit: " << name
+                        << " has no correspondence; it is fitted from nearest points alone");
+      return &targets;
+    };
+    const std::vector<FrameFit> fits =
+        fitTemplateSequence(templateMesh, j, n, frameAt, targetsAt, options,
+                            [this](int done, int total)
+                            {
+                              this->UpdateProgress(static_cast<double>(done) / total);
+                              return !this->GetAbortExecute();
+                            });
+
+    auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
+    vtkTable* table = vtkTable::GetData(outputVector, 1);
+    output->SetNumberOfBlocks(n);
+    auto frameColumn = namedArray<vtkIntArray>("Frame", n);
+    auto distanceColumn = namedArray<vtkDoubleArray>("MeanSurfaceDistance", n);
+    auto usedColumn = namedArray<vtkIntArray>("CorrespondencesUsed", n);
+    auto nearestColumn = namedArray<vtkIntArray>("NearestValid", n);
+    auto roundsColumn = namedArray<vtkIntArray>("Rounds", n);
+    auto iterationsColumn = namedArray<vtkIntArray>("Iterations", n);
+    auto energyColumn = namedArray<vtkDoubleArray>("Energy", n);
+    auto secondsColumn = namedArray<vtkDoubleArray>("Seconds", n);
+    for (int k = 0; k < n; ++k)
+    {
+      const FrameFit& fit = fits[k];
+      vtkSmartPointer<vtkPolyData> block = alignedPolyData(templateData, templateMesh, fit);
+      addFieldValue(block->GetFieldData(), "FrameIndex", k);
+      addFieldValue(block->GetFieldData(), "TemplateFrame", j);
+      output->SetBlock(k, block);
+      output->GetMetaData(static_cast<unsigned>(k))
+          ->Set(vtkCompositeDataSet::NAME(), ("aligned_" + std::to_string(k)).c_str());
+      frameColumn->SetValue(k, k);
+      distanceColumn->SetValue(k, fit.surfaceDistance.size() ? fit.surfaceDistance.mean() : 0.0);
+      usedColumn->SetValue(k, static_cast<int>(std::count(fit.used.begin(), fit.used.end(), 1)));
+      nearestColumn->SetValue(k, fit.nearestValid);
+      roundsColumn->SetValue(k, fit.rounds);
+      iterationsColumn->SetValue(k, fit.iterations);
+      energyColumn->SetValue(k, fit.energy);
+      secondsColumn->SetValue(k, fit.seconds);
+    }
+    for (vtkAbstractArray* column :
+         {static_cast<vtkAbstractArray*>(frameColumn),
+          static_cast<vtkAbstractArray*>(distanceColumn),
+          static_cast<vtkAbstractArray*>(usedColumn), static_cast<vtkAbstractArray*>(nearestColumn),
+          static_cast<vtkAbstractArray*>(roundsColumn),
+          static_cast<vtkAbstractArray*>(iterationsColumn),
+          static_cast<vtkAbstractArray*>(energyColumn),
+          static_cast<vtkAbstractArray*>(secondsColumn)})
+      table->AddColumn(column);
+  }
+  catch (const Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return 1;
+}
+
+void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Solver: " << (this->Solver == LBFGS ? "L-BFGS" : "exact") << "\n";
+  for (const auto& s : this->Stages)
+    os << indent << "Stage (wc, ws, wd, wt): " << s[0] << ", " << s[1] << ", " << s[2] << ", "
+       << s[3] << "\n";
+  os << indent << "RoundsPerStage: " << this->RoundsPerStage << "\n";
+  os << indent << "NearestEvery: " << this->NearestEvery << "\n";
+  os << indent << "MaximumNearestDistance: " << this->MaximumNearestDistance << "\n";
+  os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
+  os << indent << "UseCorrespondence: " << this->UseCorrespondence << "\n";
+  os << indent << "UseNearest: " << this->UseNearest << "\n";
+}

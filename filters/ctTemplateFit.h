@@ -1,0 +1,112 @@
+/**
+ * @class ctTemplateFit
+ * @brief Deforms the template through the whole sequence (Shehu et al. 2016, section 4.3):
+ * one connectivity, every frame.
+ *
+ * Input port 0: the sequence as a vtkMultiBlockDataSet of vtkPolyData frames (frames need not
+ * share connectivity). Input port 1: the dense correspondences, output port 0 of
+ * ctPatchCorrespondence: one copy of the template per frame with point data Matched and
+ * TargetPosition and field data TemplateFrame. The template is the structure of those blocks.
+ *
+ * Every template vertex gets an affine map, found by minimising
+ * wc Ec + ws Es + wd Ed + wt Et (correspondence, smoothness, nearest-point data, temporal) in
+ * stages; the defaults are the paper's (wc, ws, wd, wt) = (1, 400, 0, 0.1), (1, 200, 10, 0.1),
+ * (0, 100, 10, 0.1), (0, 50, 10, 0.1). Nearest points count when within MaximumNearestDistance
+ * and with normals less than MaximumNormalAngle apart. Frames are fitted from the template frame
+ * outwards, each started from its neighbour's fit. See clothtrack/TemplateFit.h.
+ *
+ * Solver 0 (default) solves each round's normal equations to a relative residual of 1e-6
+ * (sparse Cholesky factors reused as preconditioners); Solver 1 is the paper's L-BFGS,
+ * NearestEvery iterations per round.
+ *
+ * Output port 0: vtkMultiBlockDataSet, the aligned template for every frame, with point data
+ * Displacement (from the template), CorrespondenceUsed (0/1) and SurfaceDistance (to the
+ * frame's surface, metres); field data FrameIndex and TemplateFrame.
+ * Output port 1: vtkTable, one row per frame: Frame, MeanSurfaceDistance, CorrespondencesUsed,
+ * NearestValid, Rounds, Iterations, Energy, Seconds.
+ *
+ * A corrupt frame, a correspondence block that does not match the template or non-finite
+ * input is an error naming the frame; a frame without correspondence is fitted from nearest
+ * points alone, with a warning.
+ */
+#ifndef ctTemplateFit_h
+#define ctTemplateFit_h
+
+#include "ctFiltersModule.h"
+
+#include <vtkMultiBlockDataSetAlgorithm.h>
+
+#include <array>
+#include <vector>
+
+class vtkTable;
+
+class CTFILTERS_EXPORT ctTemplateFit : public vtkMultiBlockDataSetAlgorithm
+{
+public:
+  static ctTemplateFit* New();
+  vtkTypeMacro(ctTemplateFit, vtkMultiBlockDataSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Solvers
+  {
+    EXACT = 0,
+    LBFGS = 1
+  };
+  vtkSetClampMacro(Solver, int, EXACT, LBFGS);
+  vtkGetMacro(Solver, int);
+
+  /// Stages of weights (wc, ws, wd, wt), applied in order. AddStage appends one;
+  /// RemoveAllStages clears them (an update with no stage is an error).
+  void AddStage(double correspondence, double smoothness, double nearest, double temporal);
+  void RemoveAllStages();
+  int GetNumberOfStages() const { return static_cast<int>(this->Stages.size()); }
+  /// Restores the paper's four stages.
+  void SetDefaultStages();
+
+  /// Rounds of (nearest points, minimisation) per stage that uses nearest points.
+  vtkSetClampMacro(RoundsPerStage, int, 1, 100);
+  vtkGetMacro(RoundsPerStage, int);
+  /// L-BFGS iterations per round (the paper: nearest points every 20 iterations).
+  vtkSetClampMacro(NearestEvery, int, 1, 10000);
+  vtkGetMacro(NearestEvery, int);
+  /// Nearest points further than this are not used (metres).
+  vtkSetClampMacro(MaximumNearestDistance, double, 1e-6, 100.0);
+  vtkGetMacro(MaximumNearestDistance, double);
+  /// Nearest points whose normal is this far or further from the template's are not used.
+  vtkSetClampMacro(MaximumNormalAngle, double, 1.0, 180.0);
+  vtkGetMacro(MaximumNormalAngle, double);
+  /// Ablations: the correspondence term Ec, the nearest-point term Ed.
+  vtkSetMacro(UseCorrespondence, bool);
+  vtkGetMacro(UseCorrespondence, bool);
+  vtkBooleanMacro(UseCorrespondence, bool);
+  vtkSetMacro(UseNearest, bool);
+  vtkGetMacro(UseNearest, bool);
+  vtkBooleanMacro(UseNearest, bool);
+
+  vtkTable* GetSummaryOutput();
+
+protected:
+  ctTemplateFit();
+  ~ctTemplateFit() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+                  vtkInformationVector* outputVector) override;
+
+private:
+  ctTemplateFit(const ctTemplateFit&) = delete;
+  void operator=(const ctTemplateFit&) = delete;
+
+  int Solver = EXACT;
+  std::vector<std::array<double, 4>> Stages;
+  int RoundsPerStage = 5;
+  int NearestEvery = 20;
+  double MaximumNearestDistance = 0.2;
+  double MaximumNormalAngle = 90.0;
+  bool UseCorrespondence = true;
+  bool UseNearest = true;
+};
+
+#endif

@@ -1,0 +1,183 @@
+// Template fitting: both solvers minimise the same energy, deformations are recovered from
+// correspondences, nearest points alone drift or stop where correspondences do not, frames are
+// fitted from their neighbour, and bad input is refused.
+#include <clothtrack/Error.h>
+#include <clothtrack/Primitives.h>
+#include <clothtrack/TemplateFit.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace clothtrack;
+
+namespace
+{
+/// A smooth non-rigid motion: bend about the y axis growing with height, then translate.
+Vec3 bend(const Vec3& p, double amount, const Vec3& shift)
+{
+  const double angle = amount * p.y();
+  const Vec3 q(std::cos(angle) * p.x() + std::sin(angle) * p.z(), p.y(),
+               -std::sin(angle) * p.x() + std::cos(angle) * p.z());
+  return q + shift;
+}
+
+TriangleMesh moved(const TriangleMesh& mesh, double amount, const Vec3& shift)
+{
+  TriangleMesh out = mesh;
+  for (int i = 0; i < mesh.numVertices(); ++i)
+    out.V.row(i) = bend(mesh.vertex(i), amount, shift).transpose();
+  return out;
+}
+
+/// Correspondences to `frame` (same vertices) on every `stride`-th vertex.
+VertexTargets everyNth(const TriangleMesh& frame, int stride)
+{
+  VertexTargets t;
+  t.position = frame.V;
+  t.matched.assign(frame.numVertices(), 0);
+  for (int i = 0; i < frame.numVertices(); i += stride) t.matched[i] = 1;
+  return t;
+}
+
+double meanError(const Points& a, const Points& b)
+{
+  return (a - b).rowwise().norm().mean();
+}
+
+// An ellipsoid-ish body part: a stretched icosphere, 0.3 m tall.
+TriangleMesh limb()
+{
+  TriangleMesh m = icosphere(3, 0.1);
+  m.V.col(1) *= 1.5;
+  return m;
+}
+} // namespace
+
+TEST(TemplateFit, IdentityStaysPut)
+{
+  const TriangleMesh t = limb();
+  const TemplateFitter fitter(t);
+  const VertexTargets targets = everyNth(t, 3);
+  const FrameFit fit = fitter.fit(t.V, t, &targets);
+  EXPECT_LT((fit.positions - t.V).cwiseAbs().maxCoeff(), 1e-5);
+  EXPECT_LT(fit.surfaceDistance.maxCoeff(), 1e-5);
+  EXPECT_EQ(fit.used[0], 1);
+  EXPECT_EQ(fit.used[1], 0);
+}
+
+TEST(TemplateFit, RecoversBendAndShiftFromSparseCorrespondences)
+{
+  const TriangleMesh t = limb();
+  const TriangleMesh frame = moved(t, 1.5, Vec3(0.05, 0.02, -0.03));
+  const VertexTargets targets = everyNth(frame, 4);
+  const TemplateFitter fitter(t);
+  const FrameFit fit = fitter.fit(t.V, frame, &targets);
+  const double before = meanError(t.V, frame.V);
+  const double after = meanError(fit.positions, frame.V);
+  EXPECT_GT(before, 0.05);
+  // The last stages follow nearest points only, which may slide along the surface a little.
+  EXPECT_LT(after, 0.01) << "mean error " << after << " m from " << before << " m";
+  EXPECT_LT(fit.surfaceDistance.mean(), 0.002);
+  EXPECT_GT(fit.nearestValid, t.numVertices() * 9 / 10);
+}
+
+TEST(TemplateFit, LbfgsAndExactReachTheSameMinimum)
+{
+  // Without nearest points every stage is one quadratic: enough L-BFGS iterations must land
+  // where the exact solve does.
+  const TriangleMesh t = icosphere(2, 0.2);
+  const TriangleMesh frame = moved(t, 2.0, Vec3(0.03, 0.0, 0.01));
+  const VertexTargets targets = everyNth(frame, 5);
+  TemplateFitOptions exact;
+  exact.useNearest = false;
+  TemplateFitOptions lbfgs = exact;
+  lbfgs.solver = FitSolver::LBFGS;
+  lbfgs.nearestEvery = 3000;
+  const FrameFit a = TemplateFitter(t, exact).fit(t.V, frame, &targets);
+  const FrameFit b = TemplateFitter(t, lbfgs).fit(t.V, frame, &targets);
+  EXPECT_LT((a.positions - b.positions).rowwise().norm().maxCoeff(), 1e-4);
+  EXPECT_NEAR(a.energy, b.energy, 1e-6 * std::max(1.0, std::abs(a.energy)));
+  // A short L-BFGS run is not converged: it ends with a higher energy.
+  lbfgs.nearestEvery = 5;
+  const FrameFit c = TemplateFitter(t, lbfgs).fit(t.V, frame, &targets);
+  EXPECT_GT(c.energy, a.energy * (1 + 1e-3));
+}
+
+TEST(TemplateFit, CorrespondencesKeepTrackingWhereNearestPointsCannot)
+{
+  // The frame lies further than the nearest-point range: without Ec nothing pulls the template.
+  const TriangleMesh t = limb();
+  const TriangleMesh frame = moved(t, 0.5, Vec3(0.35, 0.0, 0.0));
+  const VertexTargets targets = everyNth(frame, 6);
+  TemplateFitOptions withoutEc;
+  withoutEc.useCorrespondence = false;
+  const FrameFit with = TemplateFitter(t).fit(t.V, frame, &targets);
+  const FrameFit without = TemplateFitter(t, withoutEc).fit(t.V, frame, &targets);
+  EXPECT_LT(meanError(with.positions, frame.V), 0.03);
+  EXPECT_GT(meanError(without.positions, frame.V), 0.3);
+  EXPECT_EQ(without.nearestValid, 0);
+}
+
+TEST(TemplateFit, SequenceStartsEachFrameFromItsNeighbour)
+{
+  // Steps of 12 cm: each frame is within the nearest-point range of its neighbour only, so
+  // nearest points alone track the whole sequence only if frames are chained from the template
+  // frame outwards (frame 2 is the template).
+  const TriangleMesh t = limb();
+  std::vector<TriangleMesh> frames;
+  for (int k = 0; k < 6; ++k) frames.push_back(moved(t, 0.0, Vec3(0.12 * (k - 2), 0.0, 0.0)));
+  std::vector<int> order;
+  const auto fits = fitTemplateSequence(
+      frames[2], 2, 6,
+      [&](int k) -> const TriangleMesh&
+      {
+        order.push_back(k);
+        return frames[k];
+      },
+      [](int) -> const VertexTargets* { return nullptr; }, {}, [](int, int) { return true; });
+  EXPECT_EQ(order, (std::vector<int>{1, 0, 3, 4, 5}));
+  // Nearest points pull onto the surface; along it they converge slowly (the 24 and 36 cm
+  // frames are out of reach from the template itself).
+  for (int k = 0; k < 6; ++k)
+  {
+    EXPECT_LT(fits[k].surfaceDistance.mean(), 0.005) << "frame " << k;
+    EXPECT_LT(meanError(fits[k].positions, frames[k].V), 0.06) << "frame " << k;
+  }
+  EXPECT_EQ((fits[2].positions - frames[2].V).norm(), 0.0);
+}
+
+TEST(TemplateFit, RefusesBadInput)
+{
+  const TriangleMesh t = limb();
+  TemplateFitOptions noStage;
+  noStage.stages.clear();
+  EXPECT_THROW(TemplateFitter(t, noStage), Error);
+  TemplateFitOptions negative;
+  negative.stages[0].smoothness = -1;
+  EXPECT_THROW(TemplateFitter(t, negative), Error);
+  TemplateFitOptions undetermined;
+  undetermined.stages = {{1, 0, 0, 0}};
+  EXPECT_THROW(TemplateFitter(t, undetermined), Error);
+
+  const TemplateFitter fitter(t);
+  Points nan = t.V;
+  nan(3, 1) = std::nan("");
+  EXPECT_THROW(fitter.fit(nan, t, nullptr), Error);
+  EXPECT_THROW(fitter.fit(t.V.topRows(10), t, nullptr), Error);
+  EXPECT_THROW(fitter.fit(t.V, TriangleMesh{}, nullptr), Error);
+  VertexTargets short_;
+  short_.position = t.V.topRows(5);
+  short_.matched.assign(5, 1);
+  EXPECT_THROW(fitter.fit(t.V, t, &short_), Error);
+  EXPECT_THROW(fitTemplateSequence(
+                   t, 3, 2, [&](int) -> const TriangleMesh& { return t; },
+                   [](int) -> const VertexTargets* { return nullptr; }),
+               Error);
+  // Cancelling stops the sequence with an error.
+  EXPECT_THROW(fitTemplateSequence(
+                   t, 0, 3, [&](int) -> const TriangleMesh& { return t; },
+                   [](int) -> const VertexTargets* { return nullptr; }, {},
+                   [](int done, int) { return done < 2; }),
+               Error);
+}
