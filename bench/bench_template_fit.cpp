@@ -7,8 +7,11 @@
 //                                                 each template vertex's source point)
 //   bench_template_fit synthetic PRESET FRAMES [options]
 // options: --stride S, --frames N (first N after the stride), --variants LIST (comma separated,
-// of exact, lbfgs, no-ec, no-ed, lbfgs-no-ec; default exact), --rounds R (nearest-point rounds per
-// stage), --curve FILE (per-frame mean error of each variant, CSV).
+// of exact, lbfgs, no-ec, no-ed, lbfgs-no-ec, true-ec (the matched vertices pointing at their
+// true positions: stage 3 alone); default exact), --rounds R (nearest-point rounds per
+// stage), --stages "wc,ws,wd,wt;..." (weights of each stage), --outlier D (correspondences further
+// than D from the current fit are dropped; 0: never), --curve FILE (per-frame mean error
+// of each variant, CSV, rewritten after each variant).
 #include "BenchSequence.h"
 
 #include <clothtrack/Error.h>
@@ -28,23 +31,35 @@ using namespace clothtrack::bench;
 
 namespace
 {
+std::vector<std::string> split(const std::string& list, char separator = ',')
+{
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, separator);)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
 struct Variant
 {
   std::string name;
   TemplateFitOptions options;
 };
 
-int roundsPerStage = 0; // 0: the default
+int roundsPerStage = 0;       // 0: the default
+std::vector<FitStage> stages; // empty: the default
+double outlier = -1;          // negative: the default
 
 Variant variant(const std::string& name)
 {
   Variant v{name, {}};
   if (roundsPerStage > 0) v.options.roundsPerStage = roundsPerStage;
+  if (!stages.empty()) v.options.stages = stages;
+  if (outlier >= 0) v.options.correspondenceOutlier = outlier;
   if (name == "lbfgs" || name == "lbfgs-no-ec") v.options.solver = FitSolver::LBFGS;
   if (name == "no-ec" || name == "lbfgs-no-ec") v.options.useCorrespondence = false;
   if (name == "no-ed") v.options.useNearest = false;
   if (name != "exact" && name != "lbfgs" && name != "no-ec" && name != "no-ed" &&
-      name != "lbfgs-no-ec")
+      name != "lbfgs-no-ec" && name != "true-ec")
     throw Error("unknown variant '" + name + "'");
   return v;
 }
@@ -91,6 +106,24 @@ Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
   return out;
 }
 
+/// Per-frame mean error of each variant finished so far, CSV (metres).
+void writeCurve(const std::string& path, const std::vector<std::string>& variants,
+                std::map<std::string, Summary>& results, int frames)
+{
+  std::ofstream out(path);
+  out << "frame";
+  for (const auto& name : variants)
+    if (results.count(name)) out << "," << name;
+  out << "\n";
+  for (int k = 0; k < frames; ++k)
+  {
+    out << k;
+    for (const auto& name : variants)
+      if (results.count(name)) out << "," << results[name].perFrame[k];
+    out << "\n";
+  }
+}
+
 int run(Sequence& s, const std::vector<std::string>& variants, const std::string& curve)
 {
   const int j = chooseTemplate(s);
@@ -126,40 +159,35 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
   for (const std::string& name : variants)
   {
     const Variant v = variant(name);
+    // true-ec: the same matched vertices, each pointing at its true position (stage 3 alone).
+    std::vector<VertexTargets> truthTargets;
+    if (name == "true-ec")
+      for (int k = 0; k < frames; ++k)
+      {
+        VertexTargets t = targets[k];
+        for (int i = 0; i < templ.numVertices() && k != j; ++i)
+        {
+          Vec3 truth;
+          if (t.matched[i] && s.truthOf(j, i, k, truth))
+            t.position.row(i) = truth.transpose();
+          else
+            t.matched[i] = 0;
+        }
+        truthTargets.push_back(std::move(t));
+      }
     const auto fits = fitTemplateSequence(
         templ, j, frames, [&](int k) -> const TriangleMesh& { return s.captures[k]; },
-        [&](int k) { return &targets[k]; }, v.options);
+        [&](int k) { return truthTargets.empty() ? &targets[k] : &truthTargets[k]; }, v.options);
     const Summary r = evaluate(s, j, fits);
     std::printf("| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s |\n", name.c_str(),
                 100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame, r.secondsPerFrame);
     std::fflush(stdout);
     results[name] = r;
-  }
-  if (!curve.empty())
-  {
-    std::ofstream out(curve);
-    out << "frame";
-    for (const auto& name : variants) out << "," << name;
-    out << "\n";
-    for (int k = 0; k < frames; ++k)
-    {
-      out << k;
-      for (const auto& name : variants) out << "," << results[name].perFrame[k];
-      out << "\n";
-    }
-    std::printf("per-frame mean errors (m) written to %s\n", curve.c_str());
+    if (!curve.empty()) writeCurve(curve, variants, results, frames);
   }
   return 0;
 }
 
-std::vector<std::string> split(const std::string& list)
-{
-  std::vector<std::string> out;
-  std::stringstream in(list);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 } // namespace
 
 int main(int argc, char** argv)
@@ -188,6 +216,15 @@ int main(int argc, char** argv)
         curve = value();
       else if (args[i] == "--rounds")
         roundsPerStage = std::stoi(value());
+      else if (args[i] == "--outlier")
+        outlier = std::stod(value());
+      else if (args[i] == "--stages")
+        for (const std::string& stage : split(value(), ';'))
+        {
+          const auto w = split(stage, ',');
+          if (w.size() != 4) throw Error("a stage is four weights wc,ws,wd,wt");
+          stages.push_back({std::stod(w[0]), std::stod(w[1]), std::stod(w[2]), std::stod(w[3])});
+        }
       else
         positional.push_back(args[i]);
     }

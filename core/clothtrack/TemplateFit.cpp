@@ -314,6 +314,8 @@ void checkOptions(const TemplateFitOptions& o)
   if (o.roundsPerStage < 1) throw Error("Template fit: roundsPerStage must be at least 1.");
   if (o.nearestEvery < 1) throw Error("Template fit: nearestEvery must be at least 1.");
   if (!(o.maxNearestDistance > 0)) throw Error("Template fit: maxNearestDistance must be > 0.");
+  if (!(o.correspondenceOutlier >= 0))
+    throw Error("Template fit: correspondenceOutlier must be >= 0.");
   if (!(o.maxNormalAngle > 0 && o.maxNormalAngle <= 180))
     throw Error("Template fit: maxNormalAngle must be in (0, 180] degrees.");
 }
@@ -403,18 +405,32 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
     return static_cast<int>(std::count(hasNearest.begin(), hasNearest.end(), 1));
   };
 
-  const bool anyCorrespondence = correspondenceCount > 0;
+  // Correspondences in use: all of them, less the outliers of the fit so far (when asked).
+  std::vector<unsigned char> active = result.used;
+  int activeCount = correspondenceCount;
+  bool firstRound = true;
   for (size_t stageIndex = 0; stageIndex < options_.stages.size(); ++stageIndex)
   {
     const FitStage& stage = options_.stages[stageIndex];
     const bool usesNearest = options_.useNearest && stage.nearest > 0;
-    const double wc = anyCorrespondence ? stage.correspondence / correspondenceCount : 0.0;
     const double ws = m.neighbourCount > 0 ? stage.smoothness / m.neighbourCount : 0.0;
     const double wt = stage.temporal / n;
     const int rounds = usesNearest ? options_.roundsPerStage : 1;
     for (int round = 0; round < rounds; ++round)
     {
       Points before = positions(X);
+      if (options_.correspondenceOutlier > 0 && !firstRound && stage.correspondence > 0)
+      {
+        activeCount = 0;
+        for (int i = 0; i < n; ++i)
+        {
+          active[i] = result.used[i] && (before.row(i) - correspondence.row(i)).norm() <=
+                                            options_.correspondenceOutlier;
+          activeCount += active[i];
+        }
+      }
+      firstRound = false;
+      const double wc = activeCount > 0 ? stage.correspondence / activeCount : 0.0;
       double wd = 0.0;
       if (usesNearest)
       {
@@ -422,7 +438,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
         wd = result.nearestValid > 0 ? stage.nearest / result.nearestValid : 0.0;
       }
       const Quadratic q =
-          m.assemble(b, result.used, correspondence, wc, hasNearest, nearest, wd, ws, wt);
+          m.assemble(b, active, correspondence, wc, hasNearest, nearest, wd, ws, wt);
       if (options_.solver == FitSolver::Exact)
         result.iterations += m.solveExact(q, X, stageIndex);
       else
@@ -433,6 +449,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
       if (options_.solver == FitSolver::Exact && moved < options_.convergence) break;
     }
   }
+  result.used = active;
   result.positions = positions(X).rowwise() + centroid.transpose();
   if (!result.positions.allFinite()) throw Error("Template fit: the solve diverged.");
   result.surfaceDistance.resize(n);

@@ -53,6 +53,9 @@ struct TemplateFitOptions
   int nearestEvery = 20;
   /// Exact solver: a stage ends early once no vertex moved more than this in a round (metres).
   double convergence = 5e-4;
+  /// Correspondences further than this from the template as fitted so far are dropped before
+  /// each round but the first (metres; 0 keeps them all, as the paper does).
+  double correspondenceOutlier = 0.0;
   double maxNearestDistance = 0.2; ///< metres
   double maxNormalAngle = 90.0;    ///< degrees
   /// Ablations: without Ec (the paper's Figure 6) or without Ed.

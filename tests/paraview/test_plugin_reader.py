@@ -67,6 +67,18 @@ synthetic.UpdatePipeline(synthetic.TimestepValues[2])
 truth = servermanager.Fetch(synthetic)
 check(truth.GetPointData().GetArray("IsGarment") is not None, "synthetic ground truth arrays")
 
+# Template fit: the stage weights reach the filter as repeated (wc, ws, wd, wt) commands.
+fit = ClothTrackTemplateFit(Input=OutputPort(reader, 1), Correspondence=OutputPort(reader, 1))
+check(len(fit.Stages) == 16, "default stages %s" % list(fit.Stages))
+fit.Stages = [1.0, 100.0, 0.0, 0.1, 0.0, 50.0, 10.0, 0.1]
+fit.Solver = "L-BFGS"
+fit.UpdateVTKObjects()
+# Plugin classes are not Python-wrapped in pvpython: read the filter's PrintSelf.
+printed = str(fit.GetClientSideObject())
+check(printed.count("Stage (wc, ws, wd, wt)") == 2, "stages after setting:\n" + printed)
+check("Stage (wc, ws, wd, wt): 0, 50, 10, 0.1" in printed, "second stage:\n" + printed)
+check("Solver: L-BFGS" in printed, "solver:\n" + printed)
+
 if shared and os.path.isdir(os.path.join(shared, "vlasic-samba")):
     samba = ClothTrackSequenceReader(FileName=os.path.join(shared, "vlasic-samba"))
     samba.UpdatePipelineInformation()
