@@ -47,13 +47,6 @@ double seconds(std::chrono::steady_clock::time_point since)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-} // namespace
-
-int VertexTargets::count() const
-{
-  return static_cast<int>(std::count(matched.begin(), matched.end(), 1));
-}
-
 /// Sparse Cholesky factor of a normal matrix, with a solve that runs the three right-hand sides
 /// together (one pass over the factor instead of three).
 struct Factor
@@ -109,6 +102,13 @@ struct Quadratic
   Unknowns times(const Unknowns& X) const { return H.selfadjointView<Eigen::Lower>() * X; }
   double energy(const Unknowns& X) const { return dot(X, times(X)) - 2.0 * dot(X, R) + c; }
 };
+
+} // namespace
+
+int VertexTargets::count() const
+{
+  return static_cast<int>(std::count(matched.begin(), matched.end(), 1));
+}
 
 struct TemplateFitter::Impl
 {
