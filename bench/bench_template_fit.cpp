@@ -46,6 +46,7 @@ struct Variant
 };
 
 int roundsPerStage = 0;       // 0: the default
+double solverTolerance = 0;   // 0: the default
 std::vector<FitStage> stages; // empty: the default
 double outlier = -1;          // negative: the default
 
@@ -53,6 +54,7 @@ Variant variant(const std::string& name)
 {
   Variant v{name, {}};
   if (roundsPerStage > 0) v.options.roundsPerStage = roundsPerStage;
+  if (solverTolerance > 0) v.options.solverTolerance = solverTolerance;
   if (!stages.empty()) v.options.stages = stages;
   if (outlier >= 0) v.options.correspondenceOutlier = outlier;
   if (name == "lbfgs" || name == "lbfgs-no-ec") v.options.solver = FitSolver::LBFGS;
@@ -67,6 +69,7 @@ Variant variant(const std::string& name)
 struct Summary
 {
   double mean = 0, p90 = 0, within10 = 0, worstFrame = 0, secondsPerFrame = 0;
+  double roundsPerFrame = 0, stepsPerFrame = 0;
   std::vector<double> perFrame;
 };
 
@@ -80,6 +83,8 @@ Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
   {
     if (static_cast<int>(k) == j) continue;
     time += fits[k].seconds;
+    out.roundsPerFrame += fits[k].rounds;
+    out.stepsPerFrame += fits[k].iterations;
     double sum = 0;
     int count = 0;
     for (int v = 0; v < fits[k].positions.rows(); ++v)
@@ -103,6 +108,8 @@ Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
     out.p90 = errors[errors.size() * 9 / 10];
   }
   out.secondsPerFrame = time / std::max<size_t>(1, fits.size() - 1);
+  out.roundsPerFrame /= std::max<size_t>(1, fits.size() - 1);
+  out.stepsPerFrame /= std::max<size_t>(1, fits.size() - 1);
   return out;
 }
 
@@ -152,9 +159,9 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
   const int frames = static_cast<int>(s.captures.size());
   std::printf("correspondence: %.2f s/frame, %.1f %% of template vertices matched\n",
               seconds(start) / std::max(1, frames - 1), 100 * matched / std::max(1, frames - 1));
-  std::printf(
-      "| variant | mean error | p90 | within 10 cm | worst frame mean | fit time/frame |\n");
-  std::printf("|---|---|---|---|---|---|\n");
+  std::printf("| variant | mean error | p90 | within 10 cm | worst frame mean | fit time/frame | "
+              "rounds/frame | solver steps/frame |\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n");
   std::map<std::string, Summary> results;
   for (const std::string& name : variants)
   {
@@ -179,8 +186,9 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
         templ, j, frames, [&](int k) -> const TriangleMesh& { return s.captures[k]; },
         [&](int k) { return truthTargets.empty() ? &targets[k] : &truthTargets[k]; }, v.options);
     const Summary r = evaluate(s, j, fits);
-    std::printf("| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s |\n", name.c_str(),
-                100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame, r.secondsPerFrame);
+    std::printf("| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s | %.1f | %.1f |\n",
+                name.c_str(), 100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame,
+                r.secondsPerFrame, r.roundsPerFrame, r.stepsPerFrame);
     std::fflush(stdout);
     results[name] = r;
     if (!curve.empty()) writeCurve(curve, variants, results, frames);
@@ -214,6 +222,8 @@ int main(int argc, char** argv)
         variants = split(value());
       else if (args[i] == "--curve")
         curve = value();
+      else if (args[i] == "--tolerance")
+        solverTolerance = std::stod(value());
       else if (args[i] == "--rounds")
         roundsPerStage = std::stoi(value());
       else if (args[i] == "--outlier")

@@ -161,12 +161,12 @@ struct TemplateFitter::Impl
       for (int r = 0; r < 4; ++r) edgeSlots[e][r] = slot(4 * edges[e][1] + r, 4 * edges[e][0] + r);
   }
 
-  /// Solves H X = R to a relative residual of 1e-6 with the factor of `stage`; returns the
+  /// Solves H X = R to the relative residual `tolerance` with the factor of `stage`; returns the
   /// conjugate-gradient steps.
-  int solveExact(const Quadratic& q, Unknowns& X, size_t stage, bool mayRefactor = true) const
+  int solveExact(const Quadratic& q, Unknowns& X, size_t stage, double tolerance,
+                 bool mayRefactor = true) const
   {
     constexpr int kMaxSteps = 20;
-    constexpr double kTolerance = 1e-6;
     if (factors.size() <= stage) factors.resize(stage + 1);
     std::unique_ptr<Factor>& factor = factors[stage];
     auto refactor = [&]()
@@ -175,7 +175,7 @@ struct TemplateFitter::Impl
       factor->factorise(q.H);
     };
     if (!factor || !factor->ready) refactor();
-    const double target = kTolerance * q.R.norm();
+    const double target = tolerance * q.R.norm();
     Unknowns r = q.R - q.times(X);
     Unknowns z = factor->solve(r);
     Unknowns p = z;
@@ -196,7 +196,7 @@ struct TemplateFitter::Impl
     {
       // Too far from the factored matrix: renew the factor and finish from here.
       refactor();
-      return step + solveExact(q, X, stage, false);
+      return step + solveExact(q, X, stage, tolerance, false);
     }
     return step;
   }
@@ -312,6 +312,8 @@ void checkOptions(const TemplateFitOptions& o)
                   "otherwise vertices without data are undetermined.");
   }
   if (o.roundsPerStage < 1) throw Error("Template fit: roundsPerStage must be at least 1.");
+  if (!(o.solverTolerance > 0 && o.solverTolerance < 1))
+    throw Error("Template fit: the solver tolerance must be in (0, 1).");
   if (o.nearestEvery < 1) throw Error("Template fit: nearestEvery must be at least 1.");
   if (!(o.maxNearestDistance > 0)) throw Error("Template fit: maxNearestDistance must be > 0.");
   if (!(o.correspondenceOutlier >= 0))
@@ -440,7 +442,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
       const Quadratic q =
           m.assemble(b, active, correspondence, wc, hasNearest, nearest, wd, ws, wt);
       if (options_.solver == FitSolver::Exact)
-        result.iterations += m.solveExact(q, X, stageIndex);
+        result.iterations += m.solveExact(q, X, stageIndex, options_.solverTolerance);
       else
         result.iterations += minimiseLBFGS(q, X, options_.nearestEvery);
       ++result.rounds;
