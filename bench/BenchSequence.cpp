@@ -32,19 +32,6 @@ bool Sequence::truthOf(int j, int v, int k, Vec3& position) const
   return true;
 }
 
-namespace
-{
-std::vector<OrientedSurfacePoint> toSurfacePoints(const std::vector<TransferredLandmark>& t)
-{
-  std::vector<OrientedSurfacePoint> out;
-  for (size_t k = 0; k < t.size(); ++k)
-    if (t[k].valid)
-      out.push_back(
-          {static_cast<int>(k), t[k].point.face, t[k].point.bary, t[k].direction, t[k].offset});
-  return out;
-}
-} // namespace
-
 void fitLandmarks(Sequence& s)
 {
   const BodyModel& model = builtinBodyModel();
@@ -59,7 +46,7 @@ void fitLandmarks(Sequence& s)
     const TriangleMesh body = model.posed(fit.beta, fit.frames[k].pose);
     const SurfaceLocator locator(s.captures[k]);
     s.landmarks.push_back(
-        toSurfacePoints(transferLandmarks(orientedLandmarks(model, body), s.captures[k], locator)));
+        landmarkSeeds(transferLandmarks(orientedLandmarks(model, body), s.captures[k], locator)));
   }
 }
 
@@ -86,7 +73,7 @@ Sequence syntheticSequence(const std::string& preset, int numFrames, bool trueLa
     for (size_t k = 0; k < s.captures.size(); ++k)
     {
       const SurfaceLocator locator(s.captures[k]);
-      s.landmarks.push_back(toSurfacePoints(
+      s.landmarks.push_back(landmarkSeeds(
           transferLandmarks(orientedLandmarks(model, bodies[k]), s.captures[k], locator)));
     }
   else

@@ -2,6 +2,7 @@
 
 #include "Error.h"
 #include "Geodesic.h"
+#include "LandmarkTransfer.h"
 #include "Parallel.h"
 
 #include <Eigen/Geometry>
@@ -472,5 +473,14 @@ FrameCorrespondence rigidNearestCorrespondence(
                 m.patches = 1;
               });
   return result;
+}
+std::vector<OrientedSurfacePoint> landmarkSeeds(const std::vector<TransferredLandmark>& landmarks)
+{
+  std::vector<OrientedSurfacePoint> seeds;
+  for (size_t k = 0; k < landmarks.size(); ++k)
+    if (landmarks[k].valid)
+      seeds.push_back({static_cast<int>(k), landmarks[k].point.face, landmarks[k].point.bary,
+                       landmarks[k].direction, landmarks[k].offset});
+  return seeds;
 }
 } // namespace clothtrack

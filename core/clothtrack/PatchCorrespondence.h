@@ -107,6 +107,10 @@ FrameCorrespondence rigidNearestCorrespondence(
     const TriangleMesh& templateMesh, const std::vector<OrientedSurfacePoint>& templateLandmarks,
     const TriangleMesh& frame, const std::vector<OrientedSurfacePoint>& frameLandmarks);
 
+struct TransferredLandmark;
+/// Stage 1's landmarks on a frame as patch seeds: the valid ones, their index as id.
+std::vector<OrientedSurfacePoint> landmarkSeeds(const std::vector<TransferredLandmark>& landmarks);
+
 /// Position of a surface point given by triangle + barycentric.
 Vec3 surfacePosition(const TriangleMesh& mesh, int face, const Vec3& bary);
 } // namespace clothtrack
