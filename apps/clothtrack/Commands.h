@@ -8,6 +8,7 @@ namespace clothtrack::app
 {
 using Args = std::vector<std::string>;
 
+int runAlign(const Args& args);
 int runInspect(const Args& args);
 int runConvert(const Args& args);
 int runBodyModel(const Args& args);

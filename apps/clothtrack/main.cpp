@@ -22,6 +22,9 @@ struct Command
 const std::map<std::string, Command>& commands()
 {
   static const std::map<std::string, Command> table = {
+      {"align",
+       {clothtrack::app::runAlign,
+        "align a sequence: body fit, template, correspondences, template fit, errors"}},
       {"inspect",
        {clothtrack::app::runInspect, "read a sequence and print per-frame geometry and topology"}},
       {"body-fit",

@@ -3,25 +3,7 @@
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/seq ${WORK}/empty ${WORK}/bad)
 
-function(expect_run expected_code expected_text)
-  execute_process(COMMAND ${APP} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
-  if (NOT code STREQUAL "${expected_code}")
-    message(FATAL_ERROR "clothtrack ${ARGN}: exit ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
-  endif ()
-  string(FIND "${out}${err}" "${expected_text}" pos)
-  if (pos EQUAL -1)
-    message(FATAL_ERROR "clothtrack ${ARGN}: output lacks '${expected_text}'\nstdout: ${out}\nstderr: ${err}")
-  endif ()
-  if (NOT expected_code EQUAL 0)
-    # A user error ends with one readable line that says it all (progress lines may precede it).
-    string(STRIP "${err}" stripped)
-    string(REGEX REPLACE "^.*\n" "" last_line "${stripped}")
-    string(FIND "${last_line}" "${expected_text}" pos)
-    if (pos EQUAL -1 OR NOT last_line MATCHES "^clothtrack")
-      message(FATAL_ERROR "clothtrack ${ARGN}: last stderr line is not the error:\n${err}")
-    endif ()
-  endif ()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect_run.cmake)
 
 # A small valid sequence: a tetrahedron moving up.
 foreach (k 0 1 2 3)

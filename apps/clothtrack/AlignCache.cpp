@@ -1,0 +1,126 @@
+#include "AlignCache.h"
+
+#include "Commands.h"
+#include "TextFile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace clothtrack::app
+{
+namespace
+{
+constexpr char kTargetsMagic[8] = {'C', 'T', 'T', 'G', 'T', '0', '0', '1'};
+
+nlohmann::json vec(const Vec3& v)
+{
+  return {v.x(), v.y(), v.z()};
+}
+Vec3 vec(const nlohmann::json& j)
+{
+  return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
+}
+} // namespace
+
+void writeLandmarks(const std::string& path, const nlohmann::json& key,
+                    const std::vector<FrameLandmarks>& landmarks)
+{
+  nlohmann::json frames = nlohmann::json::array();
+  for (const FrameLandmarks& frame : landmarks)
+  {
+    nlohmann::json list = nlohmann::json::array();
+    for (const OrientedSurfacePoint& p : frame)
+      list.push_back({{"id", p.id},
+                      {"face", p.face},
+                      {"bary", vec(p.bary)},
+                      {"direction", vec(p.direction)},
+                      {"offset", p.offset}});
+    frames.push_back(list);
+  }
+  writeTextAtomically(path, nlohmann::json({{"key", key}, {"landmarks", frames}}).dump() + "\n");
+}
+
+std::optional<std::vector<FrameLandmarks>> readLandmarks(const std::string& path,
+                                                         const nlohmann::json& key)
+{
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  try
+  {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    if (j.at("key") != key) return std::nullopt;
+    std::vector<FrameLandmarks> out;
+    for (const auto& frame : j.at("landmarks"))
+    {
+      FrameLandmarks list;
+      for (const auto& p : frame)
+        list.push_back({p.at("id").get<int>(), p.at("face").get<int>(), vec(p.at("bary")),
+                        vec(p.at("direction")), p.at("offset").get<double>()});
+      out.push_back(std::move(list));
+    }
+    return out;
+  }
+  catch (const nlohmann::json::exception&)
+  {
+    return std::nullopt; // unreadable: recomputed
+  }
+}
+
+void writeTargets(const std::string& path, const std::string& frameFile,
+                  const VertexTargets& targets)
+{
+  const std::string part = path + ".part";
+  {
+    std::ofstream out(part, std::ios::binary);
+    const auto nameLength = static_cast<std::uint32_t>(frameFile.size());
+    const auto n = static_cast<std::uint32_t>(targets.matched.size());
+    out.write(kTargetsMagic, sizeof(kTargetsMagic));
+    out.write(reinterpret_cast<const char*>(&nameLength), sizeof(nameLength));
+    out.write(frameFile.data(), nameLength);
+    out.write(reinterpret_cast<const char*>(&n), sizeof(n));
+    out.write(reinterpret_cast<const char*>(targets.matched.data()), n);
+    for (std::uint32_t i = 0; i < n; ++i)
+    {
+      const double p[3] = {targets.position(i, 0), targets.position(i, 1), targets.position(i, 2)};
+      out.write(reinterpret_cast<const char*>(p), sizeof(p));
+    }
+    if (!out.flush()) throw UsageError{path + ": cannot write file"};
+  }
+  std::error_code error;
+  std::filesystem::rename(part, path, error);
+  if (error) throw UsageError{path + ": cannot write file (" + error.message() + ")"};
+}
+
+std::optional<VertexTargets> readTargets(const std::string& path, const std::string& frameFile,
+                                         int templateVertices)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  char magic[sizeof(kTargetsMagic)];
+  std::uint32_t nameLength = 0, n = 0;
+  if (!in.read(magic, sizeof(magic)) || std::memcmp(magic, kTargetsMagic, sizeof(magic)) != 0 ||
+      !in.read(reinterpret_cast<char*>(&nameLength), sizeof(nameLength)) ||
+      nameLength != frameFile.size())
+    return std::nullopt;
+  std::string name(nameLength, '\0');
+  if (!in.read(name.data(), nameLength) || name != frameFile ||
+      !in.read(reinterpret_cast<char*>(&n), sizeof(n)) ||
+      n != static_cast<std::uint32_t>(templateVertices))
+    return std::nullopt;
+  VertexTargets targets;
+  targets.matched.resize(n);
+  targets.position.resize(n, 3);
+  if (!in.read(reinterpret_cast<char*>(targets.matched.data()), n)) return std::nullopt;
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    double p[3];
+    if (!in.read(reinterpret_cast<char*>(p), sizeof(p))) return std::nullopt;
+    targets.position.row(i) << p[0], p[1], p[2];
+  }
+  return targets;
+}
+} // namespace clothtrack::app

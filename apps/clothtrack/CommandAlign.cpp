@@ -1,0 +1,542 @@
+// clothtrack align: the whole pipeline on a folder of frames.
+//   OUT/aligned.pvd + aligned/   the template deformed through the sequence (one connectivity)
+//   OUT/metrics.json             timings, memory and, with --ground-truth, the errors
+//   OUT/work/                    intermediate results: a run that was stopped resumes from them
+#include "AlignCache.h"
+#include "Commands.h"
+#include "Options.h"
+#include "Progress.h"
+#include "TextFile.h"
+
+#include "ctBodyModelIO.h"
+#include "ctBuiltinBodyModel.h"
+#include "ctMeshConversion.h"
+
+#include <clothtrack/AlignmentError.h>
+#include <clothtrack/Error.h>
+#include <clothtrack/FrameList.h>
+#include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/Parallel.h>
+#include <clothtrack/SurfaceLocator.h>
+#include <clothtrack/TemplateSelection.h>
+#include <clothtrack/body/BodyFit.h>
+#include <clothtrack/body/OrientedLandmarks.h>
+
+#include <vtkDoubleArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <nlohmann/json.hpp>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace fs = std::filesystem;
+
+namespace clothtrack::app
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double peakMemoryMB()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0; // kilobytes on Linux
+}
+
+/// "A:B" (either end may be empty) -> [begin, end) of `count` frames.
+std::pair<int, int> frameRange(const std::string& spec, int count)
+{
+  if (spec.empty()) return {0, count};
+  const auto colon = spec.find(':');
+  if (colon == std::string::npos) throw UsageError{"--frames must be A:B (got '" + spec + "')"};
+  auto number = [&](const std::string& text, int fallback)
+  {
+    if (text.empty()) return fallback;
+    size_t used = 0;
+    int value = 0;
+    try
+    {
+      value = std::stoi(text, &used);
+    }
+    catch (const std::exception&)
+    {
+      used = 0;
+    }
+    if (used != text.size() || value < 0)
+      throw UsageError{"--frames must be A:B with frame numbers >= 0 (got '" + spec + "')"};
+    return value;
+  };
+  const int begin = number(spec.substr(0, colon), 0);
+  const int end = std::min(count, number(spec.substr(colon + 1), count));
+  if (begin >= end)
+    throw UsageError{"--frames " + spec + " selects no frame of the " + std::to_string(count)};
+  return {begin, end};
+}
+
+VertexTargets toTargets(const FrameCorrespondence& c)
+{
+  const int n = static_cast<int>(c.vertices.size());
+  VertexTargets t;
+  t.position.resize(n, 3);
+  t.matched.resize(n);
+  for (int i = 0; i < n; ++i)
+  {
+    t.position.row(i) = c.vertices[i].position.transpose();
+    t.matched[i] = c.vertices[i].matched();
+  }
+  return t;
+}
+
+void addArray(vtkPolyData* mesh, const char* name, const Eigen::Ref<const Eigen::MatrixXd>& values)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfComponents(static_cast<int>(values.cols()));
+  array->SetNumberOfTuples(values.rows());
+  for (Eigen::Index i = 0; i < values.rows(); ++i)
+    for (Eigen::Index c = 0; c < values.cols(); ++c) array->SetTypedComponent(i, c, values(i, c));
+  mesh->GetPointData()->AddArray(array);
+}
+
+/// Mean distance from each point to the surface behind `locator`.
+Eigen::VectorXd distances(const Points& points, const SurfaceLocator& locator)
+{
+  Eigen::VectorXd d(points.rows());
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    d[i] = locator.closestPoint(points.row(i).transpose()).distance;
+  return d;
+}
+} // namespace
+
+int runAlign(const Args& args)
+{
+  std::string input, output, truthInput, frameSpec, modelPath, solver = "exact";
+  SequenceOptions seq;
+  int threads = 0, forcedTemplate = -1;
+  double truthDistance = 0.03;
+  TemplateFitOptions fit;
+  PatchCorrespondenceOptions patches;
+  po::options_description options("align options");
+  options.add_options()("input", po::value(&input)->required(),
+                        "folder, glob pattern, list file or mesh file")(
+      "output,o", po::value(&output)->required(), "output folder")(
+      "ground-truth", po::value(&truthInput),
+      "ground-truth sequence (one connectivity, same frames as INPUT): adds the errors")(
+      "frames", po::value(&frameSpec),
+      "frames A:B of the input (A included, B not; either may "
+      "be left out)")("template", po::value(&forcedTemplate)->default_value(-1),
+                      "template frame within the selected frames (-1: chosen automatically)")(
+      "model", po::value(&modelPath), "body model file (default: the built-in model)")(
+      "threads", po::value(&threads)->default_value(0),
+      "threads (0: all cores)")("skip-bad-frames", po::bool_switch(),
+                                "leave out unreadable frames with a warning instead of stopping")(
+      "solver", po::value(&solver)->default_value(solver), "template fit solver: exact or lbfgs")(
+      "epsilon", po::value(&patches.epsilon)->default_value(patches.epsilon),
+      "near-isometry tolerance of the patches (m)")(
+      "max-radius", po::value(&patches.maxRadius)->default_value(patches.maxRadius),
+      "patch radius tau_d (m)")("min-radius",
+                                po::value(&patches.minRadius)->default_value(patches.minRadius),
+                                "smallest patch kept, tau_s (m)")(
+      "truth-distance", po::value(&truthDistance)->default_value(truthDistance),
+      "template vertices further than this from the ground truth have no error (m)");
+  addSequenceOptions(options, seq);
+  po::positional_options_description positional;
+  positional.add("input", 1);
+  po::variables_map values;
+  if (!parseOptions(args, "clothtrack align INPUT -o OUT [--ground-truth GT] [options]", options,
+                    positional, values))
+    return 0;
+  const FrameConventions conventions = toConventions(seq);
+  if (threads < 0) throw UsageError{"--threads must be 0 or more"};
+  if (solver != "exact" && solver != "lbfgs")
+    throw UsageError{"--solver must be exact or lbfgs (got '" + solver + "')"};
+  fit.solver = solver == "exact" ? FitSolver::Exact : FitSolver::LBFGS;
+  if (!(patches.epsilon > 0) || !(patches.minRadius >= 0) || !(patches.maxRadius > 0))
+    throw UsageError{"--epsilon and --max-radius must be positive, --min-radius at least 0"};
+  if (!(truthDistance > 0)) throw UsageError{"--truth-distance must be positive"};
+  setThreadCount(threads);
+  const bool skipBad = values["skip-bad-frames"].as<bool>();
+  const auto start = Clock::now();
+  nlohmann::json stageSeconds;
+
+  // Frames, and the ground truth beside them.
+  auto t0 = Clock::now();
+  const std::vector<std::string> allFiles = listFrames(input);
+  const auto [begin, end] = frameRange(frameSpec, static_cast<int>(allFiles.size()));
+  std::vector<std::string> allTruth;
+  if (!truthInput.empty())
+  {
+    allTruth = listFrames(truthInput);
+    if (allTruth.size() != allFiles.size())
+      throw UsageError{truthInput + ": " + std::to_string(allTruth.size()) +
+                       " ground-truth frames for " + std::to_string(allFiles.size()) +
+                       " input frames"};
+  }
+  std::vector<std::string> files, truthFiles;
+  std::vector<int> frameNumber; // index in the full input list
+  std::vector<TriangleMesh> frames;
+  {
+    Progress progress("reading", end - begin);
+    for (int k = begin; k < end; ++k)
+    {
+      try
+      {
+        std::vector<std::string> warnings;
+        TriangleMesh mesh = loadFrame(allFiles[k], conventions, &warnings);
+        for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+        frames.push_back(std::move(mesh));
+        files.push_back(fs::absolute(allFiles[k]).string());
+        frameNumber.push_back(k);
+        if (!allTruth.empty()) truthFiles.push_back(allTruth[k]);
+      }
+      catch (const Error& e)
+      {
+        if (!skipBad) throw;
+        std::fprintf(stderr, "warning: %s (frame left out)\n", e.what());
+      }
+      progress.step(k - begin + 1);
+    }
+    progress.finish();
+  }
+  const int n = static_cast<int>(frames.size());
+  if (n < 2) throw UsageError{input + ": at least two readable frames are needed"};
+  std::vector<TriangleMesh> truth;
+  for (const std::string& file : truthFiles)
+  {
+    truth.push_back(loadFrame(file, conventions));
+    if (truth.back().numFaces() != truth.front().numFaces())
+      throw UsageError{file + ": the ground truth must keep one connectivity (" +
+                       std::to_string(truth.back().numFaces()) + " triangles, frame " +
+                       std::to_string(frameNumber[truth.size() - 1]) + "; " +
+                       std::to_string(truth.front().numFaces()) + " in the first)"};
+  }
+  stageSeconds["read"] = since(t0);
+
+  const fs::path out(output);
+  const fs::path work = out / "work";
+  fs::create_directories(work / "correspondence");
+
+  // Stage 1: body under the clothing, landmarks on every frame.
+  t0 = Clock::now();
+  const nlohmann::json landmarkKey = {
+      {"files", files}, {"model", modelPath}, {"up", seq.up}, {"unit", seq.unit}};
+  std::vector<FrameLandmarks> landmarks;
+  if (auto cached = readLandmarks((work / "landmarks.json").string(), landmarkKey);
+      cached && static_cast<int>(cached->size()) == n)
+  {
+    landmarks = std::move(*cached);
+    std::fprintf(stderr, "body fit: landmarks of %d frames reused from %s\n", n,
+                 (work / "landmarks.json").c_str());
+  }
+  else
+  {
+    BodyModel ownModel;
+    if (!modelPath.empty()) ownModel = readBodyModel(modelPath);
+    const BodyModel& model = modelPath.empty() ? builtinBodyModel() : ownModel;
+    std::vector<const TriangleMesh*> pointers;
+    for (const auto& f : frames) pointers.push_back(&f);
+    Progress progress("body-fit", n);
+    const BodyFitResult body = fitBodySequence(model, pointers, {},
+                                               [&](double done)
+                                               {
+                                                 progress.step(static_cast<int>(n * done));
+                                                 return true;
+                                               });
+    progress.finish();
+    landmarks.resize(n);
+    parallelFor(
+        0, n,
+        [&](int k)
+        {
+          const TriangleMesh posed = model.posed(body.beta, body.frames[k].pose);
+          const SurfaceLocator locator(frames[k]);
+          landmarks[k] =
+              landmarkSeeds(transferLandmarks(orientedLandmarks(model, posed), frames[k], locator));
+        },
+        1);
+    writeLandmarks((work / "landmarks.json").string(), landmarkKey, landmarks);
+  }
+  for (int k = 0; k < n; ++k)
+    if (landmarks[k].empty())
+      std::fprintf(stderr,
+                   "warning: %s: no landmark found; the frame is fitted to its surface "
+                   "alone\n",
+                   files[k].c_str());
+  stageSeconds["body_fit"] = since(t0);
+
+  // Stage 2a: the template frame.
+  t0 = Clock::now();
+  int j = forcedTemplate;
+  if (j >= n)
+    throw UsageError{"--template " + std::to_string(j) + " is out of range: " + std::to_string(n) +
+                     " frames"};
+  if (j < 0)
+  {
+    std::vector<FrameTopology> topology(n);
+    parallelFor(
+        0, n, [&](int k) { topology[k] = frameTopology(frames[k], 0.1); }, 1);
+    j = selectTemplate(topology, {}).chosen;
+  }
+  const TriangleMesh& templ = frames[j];
+  std::fprintf(stderr, "template: frame %d (%s), %d vertices%s\n", j,
+               fs::path(files[j]).filename().c_str(), templ.numVertices(),
+               forcedTemplate >= 0 ? ", set by --template" : "");
+  stageSeconds["select_template"] = since(t0);
+
+  // A run key: results on disk made with other inputs or options are not reused.
+  const nlohmann::json runKey = {
+      {"landmarks", landmarkKey},
+      {"template", j},
+      {"ground_truth", truthFiles},
+      {"solver", solver},
+      {"patches", {patches.epsilon, patches.minRadius, patches.maxRadius}},
+      {"truth_distance", truthDistance}};
+  const fs::path runKeyPath = work / "run.json";
+  {
+    std::ifstream in(runKeyPath);
+    nlohmann::json previous;
+    bool same = false;
+    if (in)
+    {
+      try
+      {
+        same = nlohmann::json::parse(in) == runKey;
+      }
+      catch (const nlohmann::json::exception&)
+      {
+      }
+    }
+    if (!same)
+    {
+      if (fs::exists(out / "aligned") || fs::exists(work / "correspondence"))
+        std::fprintf(stderr,
+                     "new run: earlier results in %s were made with other inputs or "
+                     "options and are replaced\n",
+                     output.c_str());
+      fs::remove_all(out / "aligned");
+      fs::remove_all(work / "correspondence");
+      fs::create_directories(work / "correspondence");
+      writeTextAtomically(runKeyPath.string(), runKey.dump(2) + "\n");
+    }
+  }
+
+  std::optional<TruthAnchors> anchors;
+  if (!truth.empty()) anchors = anchorToTruth(templ.V, truth[j], truthDistance);
+
+  // Stages 2b and 3: correspondence and fit, frame by frame in the paper's order.
+  std::unique_ptr<TemplatePatches> templatePatches; // made when a frame first needs it
+  const TemplateFitter fitter(templ, fit);
+  const std::string alignedPvd = (out / "aligned.pvd").string();
+  std::vector<Points> aligned(n);
+  std::vector<Eigen::VectorXd> errors(n);
+  std::vector<double> frameSeconds(n, 0.0);
+  double correspondSeconds = 0, fitSeconds = 0;
+  int resumed = 0;
+  std::vector<int> order = {j};
+  for (int k = j - 1; k >= 0; --k) order.push_back(k);
+  for (int k = j + 1; k < n; ++k) order.push_back(k);
+  Progress progress("align", n);
+  for (size_t step = 0; step < order.size(); ++step)
+  {
+    const int k = order[step];
+    char name[32];
+    std::snprintf(name, sizeof(name), "aligned_%04d.vtp", frameNumber[k]);
+    const fs::path alignedPath = out / "aligned" / name;
+    if (fs::exists(alignedPath))
+    {
+      const TriangleMesh done = readMeshFile(alignedPath.string());
+      if (done.numVertices() == templ.numVertices() && done.V.allFinite())
+      {
+        aligned[k] = done.V;
+        ++resumed;
+      }
+    }
+    Eigen::Matrix<unsigned char, Eigen::Dynamic, 1> used =
+        Eigen::Matrix<unsigned char, Eigen::Dynamic, 1>::Zero(templ.numVertices());
+    Eigen::VectorXd surfaceDistance = Eigen::VectorXd::Zero(templ.numVertices());
+    if (aligned[k].rows() == 0)
+    {
+      const auto frameStart = Clock::now();
+      if (k == j)
+        aligned[k] = templ.V;
+      else
+      {
+        auto c0 = Clock::now();
+        char targetName[32];
+        std::snprintf(targetName, sizeof(targetName), "frame_%04d.bin", frameNumber[k]);
+        const std::string targetPath = (work / "correspondence" / targetName).string();
+        std::optional<VertexTargets> targets =
+            readTargets(targetPath, files[k], templ.numVertices());
+        if (!targets)
+        {
+          if (!templatePatches)
+            templatePatches = std::make_unique<TemplatePatches>(templ, landmarks[j], patches);
+          targets = toTargets(templatePatches->correspond(frames[k], landmarks[k]));
+          writeTargets(targetPath, files[k], *targets);
+        }
+        correspondSeconds += since(c0);
+        const int previous = k < j ? k + 1 : k - 1;
+        const FrameFit result = fitter.fit(aligned[previous], frames[k], &*targets);
+        fitSeconds += result.seconds;
+        aligned[k] = result.positions;
+        for (int i = 0; i < templ.numVertices(); ++i) used[i] = result.used[i];
+        surfaceDistance = result.surfaceDistance;
+      }
+      frameSeconds[k] = since(frameStart);
+      vtkSmartPointer<vtkPolyData> mesh = toPolyData(TriangleMesh{aligned[k], templ.F});
+      addArray(mesh, "Displacement", aligned[k] - templ.V);
+      addArray(mesh, "SurfaceDistance", surfaceDistance);
+      vtkNew<vtkUnsignedCharArray> usedArray;
+      usedArray->SetName("CorrespondenceUsed");
+      usedArray->SetNumberOfTuples(templ.numVertices());
+      for (int i = 0; i < templ.numVertices(); ++i) usedArray->SetValue(i, used[i]);
+      mesh->GetPointData()->AddArray(usedArray);
+      if (anchors)
+      {
+        errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
+        addArray(mesh, "Error", errors[k]);
+      }
+      writeCollectionFrame(alignedPvd, frameNumber[k], mesh, false);
+    }
+    else if (anchors)
+      errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
+    progress.step(static_cast<int>(step + 1));
+  }
+  progress.finish();
+  std::vector<std::pair<double, std::string>> entries;
+  for (int k = 0; k < n; ++k)
+  {
+    char name[48];
+    std::snprintf(name, sizeof(name), "aligned/aligned_%04d.vtp", frameNumber[k]);
+    entries.push_back({frameNumber[k] / seq.fps, name});
+  }
+  writeCollection(alignedPvd, entries);
+  stageSeconds["correspond"] = correspondSeconds;
+  stageSeconds["fit"] = fitSeconds;
+
+  // Evaluation.
+  t0 = Clock::now();
+  nlohmann::json metrics;
+  metrics["input"] = input;
+  metrics["frames"] = n;
+  metrics["template_frame"] = j;
+  metrics["template_file"] = files[j];
+  metrics["template_vertices"] = templ.numVertices();
+  metrics["frame_numbers"] = frameNumber;
+  metrics["resumed_frames"] = resumed;
+  metrics["threads"] = threadCount();
+  metrics["solver"] = solver;
+  std::vector<double> landmarkCounts;
+  for (const auto& l : landmarks) landmarkCounts.push_back(static_cast<double>(l.size()));
+  metrics["landmarks_per_frame"] = landmarkCounts;
+  if (anchors)
+  {
+    // Pooled over every vertex of every frame but the template frame, whose error is that of
+    // the ground truth's own surface against the capture.
+    std::vector<double> pooled, perFrameMean, perFrameMedian, perFrameP90, perFrameMax;
+    std::vector<double> perFrameWithin10;
+    for (int k = 0; k < n; ++k)
+    {
+      const ErrorStatistics s = errorStatistics(errors[k]);
+      perFrameMean.push_back(s.mean);
+      perFrameMedian.push_back(s.median);
+      perFrameP90.push_back(s.p90);
+      perFrameMax.push_back(s.max);
+      perFrameWithin10.push_back(s.within10cm);
+      if (k != j)
+        for (Eigen::Index i = 0; i < errors[k].size(); ++i) pooled.push_back(errors[k][i]);
+    }
+    const ErrorStatistics all = errorStatistics(pooled);
+    int worst = 0;
+    for (int k = 0; k < n; ++k)
+      if (perFrameMean[k] > perFrameMean[worst]) worst = k;
+    // Drift: least-squares slope of the per-frame mean against the distance from the template.
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (int k = 0; k < n; ++k)
+    {
+      const double x = std::abs(k - j), y = perFrameMean[k];
+      sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double drift = (n * sxx - sx * sx) > 0 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) : 0;
+    std::vector<double> thresholds;
+    for (int t = 0; t <= 40; ++t) thresholds.push_back(0.005 * t);
+    metrics["ground_truth"] = truthInput;
+    metrics["vertices_with_ground_truth"] = anchors->count();
+    metrics["mean_vertex_error_m"] = all.mean;
+    metrics["median_vertex_error_m"] = all.median;
+    metrics["p90_vertex_error_m"] = all.p90;
+    metrics["max_vertex_error_m"] = all.max;
+    metrics["within_5cm"] = all.within5cm;
+    metrics["within_10cm"] = all.within10cm;
+    metrics["worst_frame"] = worst;
+    metrics["worst_frame_mean_error_m"] = perFrameMean[worst];
+    metrics["drift_m_per_frame"] = drift;
+    metrics["per_frame_mean_error_m"] = perFrameMean;
+    metrics["per_frame_median_error_m"] = perFrameMedian;
+    metrics["per_frame_p90_error_m"] = perFrameP90;
+    metrics["per_frame_max_error_m"] = perFrameMax;
+    metrics["per_frame_within_10cm"] = perFrameWithin10;
+    metrics["cumulative_error"] = {{"threshold_m", thresholds},
+                                   {"fraction", cumulativeCurve(pooled, thresholds)}};
+  }
+  // Without ground truth too: how well the result covers each frame, and how smoothly it moves.
+  std::vector<double> toSurface(n), coverage(n), jitter;
+  parallelFor(
+      0, n,
+      [&](int k)
+      {
+        const SurfaceLocator frameLocator(frames[k]);
+        toSurface[k] = distances(aligned[k], frameLocator).mean();
+        const TriangleMesh alignedMesh{aligned[k], templ.F};
+        const SurfaceLocator alignedLocator(alignedMesh);
+        coverage[k] = distances(frames[k].V, alignedLocator).mean();
+      },
+      1);
+  for (int k = 1; k + 1 < n; ++k)
+    jitter.push_back((aligned[k + 1] - 2 * aligned[k] + aligned[k - 1]).rowwise().norm().mean());
+  metrics["per_frame_surface_distance_m"] = toSurface;
+  metrics["per_frame_coverage_distance_m"] = coverage;
+  double meanSurface = 0, meanCoverage = 0, meanJitter = 0;
+  for (int k = 0; k < n; ++k) meanSurface += toSurface[k] / n, meanCoverage += coverage[k] / n;
+  for (double x : jitter) meanJitter += x / jitter.size();
+  metrics["mean_surface_distance_m"] = meanSurface;
+  metrics["mean_coverage_distance_m"] = meanCoverage;
+  metrics["mean_jitter_m"] = meanJitter;
+  stageSeconds["evaluate"] = since(t0);
+
+  const double total = since(start);
+  int computed = 0;
+  double computedSeconds = 0;
+  for (int k = 0; k < n; ++k)
+    if (frameSeconds[k] > 0) ++computed, computedSeconds += frameSeconds[k];
+  metrics["seconds_total"] = total;
+  metrics["seconds_per_frame"] = total / n;
+  metrics["seconds_per_fitted_frame"] = computed ? computedSeconds / computed : 0.0;
+  metrics["stage_seconds"] = stageSeconds;
+  metrics["peak_rss_mb"] = peakMemoryMB();
+  writeTextAtomically((out / "metrics.json").string(), metrics.dump(2) + "\n");
+
+  std::printf("aligned %d frames (template frame %d) in %.1f s (%.2f s/frame%s)", n, j, total,
+              total / n, resumed ? (", " + std::to_string(resumed) + " resumed").c_str() : "");
+  if (anchors)
+    std::printf("; mean vertex error %.2f cm, %.2f %% within 10 cm",
+                100 * metrics["mean_vertex_error_m"].get<double>(),
+                100 * metrics["within_10cm"].get<double>());
+  std::printf("\nwrote %s and %s\n", alignedPvd.c_str(), (out / "metrics.json").c_str());
+  return 0;
+}
+} // namespace clothtrack::app

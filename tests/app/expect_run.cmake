@@ -1,0 +1,21 @@
+# expect_run(CODE TEXT ARGS...): runs ${APP} ARGS, checks the exit code and that TEXT is in the
+# output; for a failure, that the last stderr line is the error and names it.
+function(expect_run expected_code expected_text)
+  execute_process(COMMAND ${APP} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+  if (NOT code STREQUAL "${expected_code}")
+    message(FATAL_ERROR "clothtrack ${ARGN}: exit ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
+  endif ()
+  string(FIND "${out}${err}" "${expected_text}" pos)
+  if (pos EQUAL -1)
+    message(FATAL_ERROR "clothtrack ${ARGN}: output lacks '${expected_text}'\nstdout: ${out}\nstderr: ${err}")
+  endif ()
+  if (NOT expected_code EQUAL 0)
+    # A user error ends with one readable line that says it all (progress lines may precede it).
+    string(STRIP "${err}" stripped)
+    string(REGEX REPLACE "^.*\n" "" last_line "${stripped}")
+    string(FIND "${last_line}" "${expected_text}" pos)
+    if (pos EQUAL -1 OR NOT last_line MATCHES "^clothtrack")
+      message(FATAL_ERROR "clothtrack ${ARGN}: last stderr line is not the error:\n${err}")
+    endif ()
+  endif ()
+endfunction()
