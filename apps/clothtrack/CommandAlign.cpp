@@ -6,6 +6,7 @@
 #include "Commands.h"
 #include "Options.h"
 #include "Progress.h"
+#include "Report.h"
 #include "TextFile.h"
 
 #include "ctBodyModelIO.h"
@@ -144,6 +145,7 @@ int runAlign(const Args& args)
       "threads", po::value(&threads)->default_value(0),
       "threads (0: all cores)")("skip-bad-frames", po::bool_switch(),
                                 "leave out unreadable frames with a warning instead of stopping")(
+      "no-report", po::bool_switch(), "skip the plots, renders and report.html")(
       "solver", po::value(&solver)->default_value(solver), "template fit solver: exact or lbfgs")(
       "epsilon", po::value(&patches.epsilon)->default_value(patches.epsilon),
       "near-isometry tolerance of the patches (m)")(
@@ -228,7 +230,7 @@ int runAlign(const Args& args)
 
   const fs::path out(output);
   const fs::path work = out / "work";
-  fs::create_directories(work / "correspondence");
+  fs::create_directories(work);
 
   // Stage 1: body under the clothing, landmarks on every frame.
   t0 = Clock::now();
@@ -322,7 +324,7 @@ int runAlign(const Args& args)
     }
     if (!same)
     {
-      if (fs::exists(out / "aligned") || fs::exists(work / "correspondence"))
+      if (fs::exists(out / "aligned"))
         std::fprintf(stderr,
                      "new run: earlier results in %s were made with other inputs or "
                      "options and are replaced\n",
@@ -437,6 +439,9 @@ int runAlign(const Args& args)
   metrics["template_file"] = files[j];
   metrics["template_vertices"] = templ.numVertices();
   metrics["frame_numbers"] = frameNumber;
+  metrics["files"] = files;
+  metrics["unit"] = seq.unit;
+  metrics["up"] = seq.up;
   metrics["resumed_frames"] = resumed;
   metrics["threads"] = threadCount();
   metrics["solver"] = solver;
@@ -537,6 +542,12 @@ int runAlign(const Args& args)
                 100 * metrics["mean_vertex_error_m"].get<double>(),
                 100 * metrics["within_10cm"].get<double>());
   std::printf("\nwrote %s and %s\n", alignedPvd.c_str(), (out / "metrics.json").c_str());
+  std::fflush(stdout);
+  if (!values["no-report"].as<bool>())
+  {
+    writeReport(output);
+    std::printf("report: %s\n", (out / "report.html").c_str());
+  }
   return 0;
 }
 } // namespace clothtrack::app

@@ -10,6 +10,7 @@ using Args = std::vector<std::string>;
 
 int runAlign(const Args& args);
 int runInspect(const Args& args);
+int runReport(const Args& args);
 int runConvert(const Args& args);
 int runBodyModel(const Args& args);
 int runSimulateCapture(const Args& args);

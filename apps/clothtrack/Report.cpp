@@ -1,0 +1,76 @@
+#include "Report.h"
+
+#include "Commands.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace clothtrack::app
+{
+namespace
+{
+bool onPath(const std::string& program)
+{
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  size_t start = 0;
+  while (start <= dirs.size())
+  {
+    const size_t end = std::min(dirs.find(':', start), dirs.size());
+    const std::filesystem::path candidate =
+        std::filesystem::path(dirs.substr(start, end - start)) / program;
+    if (access(candidate.c_str(), X_OK) == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+/// The package beside this build (or installed): CLOTHTRACK_PYTHONPATH overrides it.
+std::string packageDirectory()
+{
+  if (const char* own = std::getenv("CLOTHTRACK_PYTHONPATH")) return own;
+  return CLOTHTRACK_PYTHON_DIR;
+}
+} // namespace
+
+void writeReport(const std::string& folder)
+{
+  if (!std::filesystem::is_regular_file(std::filesystem::path(folder) / "metrics.json"))
+    throw UsageError{folder + ": no metrics.json (run 'clothtrack align' first)"};
+  const std::string python = CLOTHTRACK_PYTHON_EXECUTABLE;
+  std::vector<std::string> command;
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display)
+  {
+    if (!onPath("xvfb-run"))
+      throw UsageError{"the report's renders need an X display or xvfb-run (Debian: xvfb)"};
+    command = {"xvfb-run", "-a", "-s", "-screen 0 1280x800x24"};
+  }
+  for (const std::string& part :
+       {python, std::string("-m"), std::string("clothtrack.report"), folder})
+    command.push_back(part);
+
+  const std::string pythonPath = packageDirectory();
+  const pid_t child = fork();
+  if (child < 0) throw UsageError{"report: cannot start " + python};
+  if (child == 0)
+  {
+    const char* old = std::getenv("PYTHONPATH");
+    const std::string value = pythonPath + (old && *old ? std::string(":") + old : "");
+    setenv("PYTHONPATH", value.c_str(), 1);
+    std::vector<char*> argv;
+    for (std::string& part : command) argv.push_back(part.data());
+    argv.push_back(nullptr);
+    execvp(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  if (waitpid(child, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw UsageError{"report: '" + command.front() + " ... clothtrack.report' failed (exit " +
+                     std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                     "); the aligned sequence and metrics.json are written"};
+}
+} // namespace clothtrack::app

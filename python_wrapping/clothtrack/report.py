@@ -1,0 +1,208 @@
+"""The report of an aligned sequence: plots, renders and an HTML page beside `clothtrack align`'s output.
+
+usage: python3 -m clothtrack.report OUT   (OUT holds metrics.json and aligned.pvd; needs an X
+display for the renders: 'clothtrack report OUT' starts a virtual one when there is none)
+
+Writes OUT/images/per_frame_error.png, cumulative_error.png, frame_NNNN.png (input frame, template,
+result coloured by error) and OUT/report.html.
+"""
+import html
+import json
+import os
+import sys
+from pathlib import Path
+
+
+def _plots(metrics, images):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    written = []
+    frames = metrics["frame_numbers"]
+    has_truth = "per_frame_mean_error_m" in metrics
+    fig, ax = plt.subplots(figsize=(7, 3.2), dpi=110)
+    if has_truth:
+        ax.plot(frames, [100 * e for e in metrics["per_frame_mean_error_m"]], label="mean")
+        ax.plot(frames, [100 * e for e in metrics["per_frame_p90_error_m"]], label="90th percentile",
+                alpha=0.7)
+        ax.set_ylabel("vertex error (cm)")
+    else:
+        ax.plot(frames, [100 * e for e in metrics["per_frame_surface_distance_m"]],
+                label="template to frame")
+        ax.plot(frames, [100 * e for e in metrics["per_frame_coverage_distance_m"]],
+                label="frame to template")
+        ax.set_ylabel("mean distance (cm)")
+    ax.axvline(frames[metrics["template_frame"]], color="grey", linestyle=":", label="template frame")
+    ax.set_xlabel("frame")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(images / "per_frame_error.png")
+    plt.close(fig)
+    written.append("per_frame_error.png")
+    if has_truth:
+        curve = metrics["cumulative_error"]
+        fig, ax = plt.subplots(figsize=(5, 3.2), dpi=110)
+        ax.plot([100 * t for t in curve["threshold_m"]], [100 * f for f in curve["fraction"]])
+        ax.set_xlabel("error threshold (cm)")
+        ax.set_ylabel("vertices within (%)")
+        ax.set_ylim(0, 100)
+        ax.grid(alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(images / "cumulative_error.png")
+        plt.close(fig)
+        written.append("cumulative_error.png")
+    return written
+
+
+def _chosen_frames(metrics):
+    n = metrics["frames"]
+    picks = [metrics["template_frame"], n // 2, n - 1]
+    if "worst_frame" in metrics:
+        picks.append(metrics["worst_frame"])
+    return sorted(set(picks))
+
+
+def _render_frame(out, metrics, k, path, error_range):
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkTextActor
+
+    from clothtrack.rendering import colour_actor, offscreen_window, save_png
+    from clothtrack.sequence import read_sequence
+
+    number = metrics["frame_numbers"][k]
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(out / "aligned" / ("aligned_%04d.vtp" % number)))
+    reader.Update()
+    result = reader.GetOutput()
+    conventions = {"length_unit": metrics["unit"], "up_axis": metrics["up"]}
+    frame = read_sequence(metrics["files"][k], **conventions)[0]
+    template = read_sequence(metrics["files"][metrics["template_frame"]], **conventions)[0]
+    array = "Error" if result.GetPointData().GetArray("Error") else "SurfaceDistance"
+
+    window = offscreen_window(1200, 560)
+    bounds = result.GetBounds()
+    centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
+    panels = [("input frame %d" % number, colour_actor(frame, (0.85, 0.85, 0.85), smooth_normals=True)),
+              ("template (frame %d)" % metrics["frame_numbers"][metrics["template_frame"]],
+               colour_actor(template, (0.86, 0.72, 0.62), smooth_normals=True))]
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputData(result)
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray(array)
+    mapper.SetScalarRange(0.0, error_range)
+    lut = mapper.GetLookupTable()
+    lut.SetHueRange(0.66, 0.0)
+    lut.Build()
+    coloured = vtkActor()
+    coloured.SetMapper(mapper)
+    label = "error (m)" if array == "Error" else "distance to frame (m)"
+    panels.append(("aligned template, %s" % label.split(" (")[0], coloured))
+    for index, (title, actor) in enumerate(panels):
+        renderer = vtkRenderer()
+        renderer.SetViewport(index / 3, 0, (index + 1) / 3, 1)
+        renderer.SetBackground(1, 1, 1)
+        renderer.AddActor(actor)
+        text = vtkTextActor()
+        text.SetInput(title)
+        text.GetTextProperty().SetColor(0, 0, 0)
+        text.GetTextProperty().SetFontSize(16)
+        text.SetPosition(10, 530)
+        renderer.AddActor2D(text)
+        if index == 2:
+            bar = vtkScalarBarActor()
+            bar.SetLookupTable(mapper.GetLookupTable())
+            bar.SetTitle(label)
+            bar.SetNumberOfLabels(5)
+            bar.SetWidth(0.12)
+            bar.SetHeight(0.6)
+            bar.SetPosition(0.85, 0.2)
+            bar.GetTitleTextProperty().SetColor(0, 0, 0)
+            bar.GetLabelTextProperty().SetColor(0, 0, 0)
+            bar.SetLabelFormat("%.2f")
+            renderer.AddActor2D(bar)
+        camera = renderer.GetActiveCamera()
+        camera.SetFocalPoint(*centre)
+        camera.SetPosition(centre[0] + 1.2, centre[1] + 0.5, centre[2] + 3.2)
+        camera.SetViewUp(0, 1, 0)
+        renderer.ResetCamera(bounds)
+        camera.Zoom(1.25)
+        window.AddRenderer(renderer)
+    save_png(window, path)
+
+
+def _table(rows):
+    cells = "".join("<tr><th>%s</th><td>%s</td></tr>" % (html.escape(k), html.escape(v)) for k, v in rows)
+    return "<table>%s</table>" % cells
+
+
+def write_report(out):
+    """Writes OUT/images/*.png and OUT/report.html from OUT/metrics.json and OUT/aligned/."""
+    out = Path(out)
+    metrics_path = out / "metrics.json"
+    if not metrics_path.is_file():
+        raise FileNotFoundError("%s: no metrics.json (run 'clothtrack align' first)" % out)
+    metrics = json.loads(metrics_path.read_text())
+    images = out / "images"
+    images.mkdir(exist_ok=True)
+    plots = _plots(metrics, images)
+    error_range = 0.1 if "mean_vertex_error_m" in metrics else 0.05
+    renders = []
+    for k in _chosen_frames(metrics):
+        name = "frame_%04d.png" % metrics["frame_numbers"][k]
+        _render_frame(out, metrics, k, images / name, error_range)
+        renders.append((k, name))
+
+    rows = [("input", metrics["input"]), ("frames", str(metrics["frames"])),
+            ("template frame", "%d (%s)" % (metrics["template_frame"], os.path.basename(metrics["template_file"]))),
+            ("template vertices", str(metrics["template_vertices"])),
+            ("time", "%.1f s in all, %.2f s per frame, %d threads" % (
+                metrics["seconds_total"], metrics["seconds_per_frame"], metrics["threads"])),
+            ("peak memory", "%.0f MB" % metrics["peak_rss_mb"])]
+    rows += [("stage: " + k, "%.1f s" % v) for k, v in metrics["stage_seconds"].items()]
+    if "mean_vertex_error_m" in metrics:
+        rows += [("mean vertex error", "%.2f cm" % (100 * metrics["mean_vertex_error_m"])),
+                 ("median vertex error", "%.2f cm" % (100 * metrics["median_vertex_error_m"])),
+                 ("90th percentile", "%.2f cm" % (100 * metrics["p90_vertex_error_m"])),
+                 ("within 5 cm", "%.2f %%" % (100 * metrics["within_5cm"])),
+                 ("within 10 cm", "%.2f %%" % (100 * metrics["within_10cm"])),
+                 ("worst frame", "%d (mean %.2f cm)" % (metrics["worst_frame"],
+                                                       100 * metrics["worst_frame_mean_error_m"])),
+                 ("drift", "%.3f mm per frame from the template" % (1000 * metrics["drift_m_per_frame"]))]
+    rows += [("template to frame surface", "%.2f cm (mean)" % (100 * metrics["mean_surface_distance_m"])),
+             ("frame to template surface", "%.2f cm (mean)" % (100 * metrics["mean_coverage_distance_m"])),
+             ("jitter", "%.2f mm (mean vertex acceleration per frame)" % (1000 * metrics["mean_jitter_m"]))]
+    body = ["<h1>ClothTrack alignment report</h1>", _table(rows), "<h2>Per frame</h2>"]
+    body += ['<img src="images/%s" alt="%s">' % (p, p) for p in plots]
+    body.append("<h2>Frames</h2>")
+    for k, name in renders:
+        body.append("<h3>frame %d</h3><img src=\"images/%s\" alt=\"frame %d\">" % (
+            metrics["frame_numbers"][k], name, metrics["frame_numbers"][k]))
+    page = ("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>ClothTrack report</title>"
+            "<style>body{font-family:sans-serif;max-width:1240px;margin:auto}th{text-align:left;"
+            "padding-right:2em}img{max-width:100%}</style></head><body>\n"
+            + "\n".join(body) + "\n</body></html>\n")
+    part = out / "report.html.part"
+    part.write_text(page)
+    part.replace(out / "report.html")
+    return out / "report.html"
+
+
+def main(argv):
+    if len(argv) != 2 or argv[1] in ("-h", "--help"):
+        print(__doc__.strip())
+        return 0 if len(argv) == 2 else 1
+    try:
+        path = write_report(argv[1])
+    except (OSError, KeyError, ValueError) as error:
+        print("clothtrack report: %s" % error, file=sys.stderr)
+        return 1
+    print("wrote", path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
