@@ -161,6 +161,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     for (const auto& s : this->Stages) options.stages.push_back({s[0], s[1], s[2], s[3]});
     options.solver = this->Solver == LBFGS ? FitSolver::LBFGS : FitSolver::Exact;
     options.roundsPerStage = this->RoundsPerStage;
+    options.solverTolerance = this->SolverTolerance;
     options.nearestEvery = this->NearestEvery;
     options.maxNearestDistance = this->MaximumNearestDistance;
     options.maxNormalAngle = this->MaximumNormalAngle;
@@ -248,6 +249,7 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
     os << indent << "Stage (wc, ws, wd, wt): " << s[0] << ", " << s[1] << ", " << s[2] << ", "
        << s[3] << "\n";
   os << indent << "RoundsPerStage: " << this->RoundsPerStage << "\n";
+  os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "NearestEvery: " << this->NearestEvery << "\n";
   os << indent << "MaximumNearestDistance: " << this->MaximumNearestDistance << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";

@@ -67,6 +67,9 @@ public:
   /// Rounds of (nearest points, minimisation) per stage that uses nearest points.
   vtkSetClampMacro(RoundsPerStage, int, 1, 100);
   vtkGetMacro(RoundsPerStage, int);
+  /// Exact solver: relative residual at which each round's solve stops.
+  vtkSetClampMacro(SolverTolerance, double, 1e-12, 0.5);
+  vtkGetMacro(SolverTolerance, double);
   /// L-BFGS iterations per round (the paper: nearest points every 20 iterations).
   vtkSetClampMacro(NearestEvery, int, 1, 10000);
   vtkGetMacro(NearestEvery, int);
@@ -102,6 +105,7 @@ private:
   int Solver = EXACT;
   std::vector<std::array<double, 4>> Stages;
   int RoundsPerStage = 5;
+  double SolverTolerance = 1e-4;
   int NearestEvery = 20;
   double MaximumNearestDistance = 0.2;
   double MaximumNormalAngle = 90.0;
