@@ -215,6 +215,15 @@ int runAlign(const Args& args)
     progress.finish();
   }
   const int n = static_cast<int>(frames.size());
+  // Frames missing from a numbered sequence make the motion jump there: say so.
+  for (int k = 1; k < n; ++k)
+  {
+    const long before = frameNumberFromName(files[k - 1]), after = frameNumberFromName(files[k]);
+    if (before >= 0 && after > before + 1)
+      std::fprintf(stderr, "warning: frames %ld to %ld are missing between %s and %s\n", before + 1,
+                   after - 1, fs::path(files[k - 1]).filename().c_str(),
+                   fs::path(files[k]).filename().c_str());
+  }
   if (n < 2) throw UsageError{input + ": at least two readable frames are needed"};
   std::vector<TriangleMesh> truth;
   for (const std::string& file : truthFiles)

@@ -54,6 +54,17 @@ if (NOT frames EQUAL 3)
   message(FATAL_ERROR "--frames 1:4 aligned ${frames} frames")
 endif ()
 
+# A corrupt frame is an error by default; --skip-bad-frames leaves it out with a warning, and a gap
+# in the numbering is reported.
+file(MAKE_DIRECTORY ${WORK}/gappy)
+foreach (k 0 1 4)
+  file(COPY ${WORK}/synth/frames/frame_000${k}.obj DESTINATION ${WORK}/gappy)
+endforeach ()
+file(WRITE ${WORK}/gappy/frame_0002.obj "v 0 0 0\nv 1 0 0\nf 1 2 7\n")
+expect_run(1 "frame_0002.obj:3: face index 7 out of range" align ${WORK}/gappy -o ${WORK}/gappy_out)
+expect_run(0 "frame left out" align ${WORK}/gappy -o ${WORK}/gappy_out --skip-bad-frames --no-report)
+expect_run(0 "frames 2 to 3 are missing" align ${WORK}/gappy -o ${WORK}/gappy_out --skip-bad-frames --no-report)
+
 expect_run(0 "--ground-truth" align --help)
 expect_run(1 "no metrics.json" report ${WORK}/empty)
 expect_run(1 "no such file or folder" align ${WORK}/nothing -o ${WORK}/x)
