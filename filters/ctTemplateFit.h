@@ -15,8 +15,8 @@
  * and with normals less than MaximumNormalAngle apart. Frames are fitted from the template frame
  * outwards, each started from its neighbour's fit. See clothtrack/TemplateFit.h.
  *
- * Solver 0 (default) solves each round's normal equations to a relative residual of 1e-6
- * (sparse Cholesky factors reused as preconditioners); Solver 1 is the paper's L-BFGS,
+ * Solver 0 (default) solves each round's normal equations to the relative residual
+ * SolverTolerance, 1e-4 (sparse Cholesky factors reused as preconditioners); Solver 1 is the paper's L-BFGS,
  * NearestEvery iterations per round.
  *
  * Output port 0: vtkMultiBlockDataSet, the aligned template for every frame, with point data

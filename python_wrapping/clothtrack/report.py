@@ -84,8 +84,6 @@ def _render_frame(out, metrics, k, path, error_range):
     array = "Error" if result.GetPointData().GetArray("Error") else "SurfaceDistance"
 
     window = offscreen_window(1200, 560)
-    bounds = result.GetBounds()
-    centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
     panels = [("input frame %d" % number, colour_actor(frame, (0.85, 0.85, 0.85), smooth_normals=True)),
               ("template (frame %d)" % metrics["frame_numbers"][metrics["template_frame"]],
                colour_actor(template, (0.86, 0.72, 0.62), smooth_normals=True))]
@@ -124,6 +122,9 @@ def _render_frame(out, metrics, k, path, error_range):
             bar.GetLabelTextProperty().SetColor(0, 0, 0)
             bar.SetLabelFormat("%.2f")
             renderer.AddActor2D(bar)
+        # Each panel framed on its own mesh: the template frame may be elsewhere in the room.
+        bounds = actor.GetBounds()
+        centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
         camera = renderer.GetActiveCamera()
         camera.SetFocalPoint(*centre)
         camera.SetPosition(centre[0] + 1.2, centre[1] + 0.5, centre[2] + 3.2)

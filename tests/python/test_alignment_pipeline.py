@@ -1,6 +1,7 @@
 """Stages 1 to 3 chained from Python on a synthetic skirt capture: body fit and landmarks, patch
-correspondence, template fit. The aligned template is checked against the ground truth that the
-capture's source map gives for every template vertex."""
+correspondence, template fit, then the alignment error. The aligned template is checked against the
+ground truth that the capture's source map gives for every template vertex, and ctAlignmentError
+against that same check."""
 
 import unittest
 
@@ -29,12 +30,16 @@ class AlignmentPipelineTest(unittest.TestCase):
         source.SetNumberOfFrames(FRAMES)
         source.SetFrameRate(FRAME_RATE)
         sequence = vtkMultiBlockDataSet()
+        truth_sequence = vtkMultiBlockDataSet()
         truths, sources = [], []
         for k in range(FRAMES):
             time = k / FRAME_RATE
             source.UpdateTimeStep(time)
             truths.append(as_numpy(source.GetOutput().GetPoints().GetData()))
             truth_faces = triangles(source.GetOutput())
+            truth_frame = source.GetOutput().NewInstance()
+            truth_frame.DeepCopy(source.GetOutput())
+            truth_sequence.SetBlock(k, truth_frame)
             source.GetOutputInformation(1).Set(vtkStreamingDemandDrivenPipeline.UPDATE_TIME_STEP(), time)
             source.Update(1)
             frame = source.GetCaptureOutput().NewInstance()
@@ -53,7 +58,10 @@ class AlignmentPipelineTest(unittest.TestCase):
         fit = clothtrack.ctTemplateFit()
         fit.SetInputData(0, sequence)
         fit.SetInputConnection(1, correspondence.GetOutputPort(0))
-        fit.Update()
+        error_filter = clothtrack.ctAlignmentError()
+        error_filter.SetInputConnection(0, fit.GetOutputPort(0))
+        error_filter.SetInputData(1, truth_sequence)
+        error_filter.Update()
 
         j = correspondence.GetChosenFrame()
         aligned = fit.GetOutputDataObject(0)
@@ -77,6 +85,12 @@ class AlignmentPipelineTest(unittest.TestCase):
             self.assertGreater((error < 0.10).mean(), 0.9, "frame %d" % k)
             surface = as_numpy(block.GetPointData().GetArray("SurfaceDistance"))
             self.assertLess(np.median(surface), 0.01)
+            # The filter ties template vertices to the truth as the source map does (closest point,
+            # 3 cm at most): the same errors.
+            table = error_filter.GetFrameErrorOutput()
+            self.assertAlmostEqual(table.GetValueByName(k, "Mean").ToDouble(), error.mean(), places=4)
+            with_error = as_numpy(error_filter.GetOutputDataObject(0).GetBlock(k).GetPointData().GetArray("Error"))
+            self.assertEqual(int(np.isfinite(with_error).sum()), int(has_truth.sum()))
         summary = fit.GetSummaryOutput()
         self.assertEqual(summary.GetNumberOfRows(), FRAMES)
 
