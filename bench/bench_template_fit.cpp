@@ -10,11 +10,13 @@
 // of exact, lbfgs, no-ec, no-ed, lbfgs-no-ec, true-ec (the matched vertices pointing at their
 // true positions: stage 3 alone); default exact), --rounds R (nearest-point rounds per
 // stage), --stages "wc,ws,wd,wt;..." (weights of each stage), --outlier D (correspondences further
-// than D from the current fit are dropped; 0: never), --curve FILE (per-frame mean error
-// of each variant, CSV, rewritten after each variant).
+// than D from the current fit are dropped; 0: never), --predict R (each frame started from the
+// previous fit moved by the landmarks' locally rigid motion, Gaussian width R metres), --curve FILE
+// (per-frame mean error of each variant, CSV, rewritten after each variant).
 #include "BenchSequence.h"
 
 #include <clothtrack/Error.h>
+#include <clothtrack/MotionPrediction.h>
 #include <clothtrack/Parallel.h>
 #include <clothtrack/PatchCorrespondence.h>
 #include <clothtrack/TemplateFit.h>
@@ -49,6 +51,7 @@ int roundsPerStage = 0;       // 0: the default
 double solverTolerance = 0;   // 0: the default
 std::vector<FitStage> stages; // empty: the default
 double outlier = -1;          // negative: the default
+double predictRadius = 0;     // > 0: starts predicted from the landmarks' motion
 
 Variant variant(const std::string& name)
 {
@@ -182,9 +185,19 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
         }
         truthTargets.push_back(std::move(t));
       }
+    StartPrediction predict;
+    if (predictRadius > 0)
+      predict = [&](int k, int from, const Points& fit)
+      {
+        std::vector<Vec3> before, after;
+        pairLandmarks(s.captures[from], s.landmarks[from], s.captures[k], s.landmarks[k], before,
+                      after);
+        return predictMotion(fit, before, after, predictRadius);
+      };
     const auto fits = fitTemplateSequence(
         templ, j, frames, [&](int k) -> const TriangleMesh& { return s.captures[k]; },
-        [&](int k) { return truthTargets.empty() ? &targets[k] : &truthTargets[k]; }, v.options);
+        [&](int k) { return truthTargets.empty() ? &targets[k] : &truthTargets[k]; }, v.options, {},
+        predict);
     const Summary r = evaluate(s, j, fits);
     std::printf("| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s | %.1f | %.1f |\n",
                 name.c_str(), 100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame,
@@ -224,6 +237,8 @@ int main(int argc, char** argv)
         curve = value();
       else if (args[i] == "--tolerance")
         solverTolerance = std::stod(value());
+      else if (args[i] == "--predict")
+        predictRadius = std::stod(value());
       else if (args[i] == "--rounds")
         roundsPerStage = std::stoi(value());
       else if (args[i] == "--outlier")

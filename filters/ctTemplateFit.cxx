@@ -1,9 +1,11 @@
 #include "ctTemplateFit.h"
 
 #include "ctFrameName.h"
+#include "ctLandmarkPolyData.h"
 #include "ctNamedArrays.h"
 
 #include <clothtrack/Error.h>
+#include <clothtrack/MotionPrediction.h>
 #include <clothtrack/TemplateFit.h>
 
 #include <vtkCharArray.h>
@@ -88,7 +90,7 @@ vtkSmartPointer<vtkPolyData> alignedPolyData(vtkPolyData* templateData,
 
 ctTemplateFit::ctTemplateFit()
 {
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(2);
   this->SetDefaultStages();
 }
@@ -119,9 +121,10 @@ vtkTable* ctTemplateFit::GetSummaryOutput()
   return vtkTable::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-int ctTemplateFit::FillInputPortInformation(int, vtkInformation* info)
+int ctTemplateFit::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
+  if (port == 2) info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
 
@@ -186,13 +189,36 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
                         << " has no correspondence; it is fitted from nearest points alone");
       return &targets;
     };
-    const std::vector<FrameFit> fits =
-        fitTemplateSequence(templateMesh, j, n, frameAt, targetsAt, options,
-                            [this](int done, int total)
-                            {
-                              this->UpdateProgress(static_cast<double>(done) / total);
-                              return !this->GetAbortExecute();
-                            });
+    // With landmarks, each start follows their motion from the neighbouring frame.
+    StartPrediction predict;
+    auto* landmarkBlocks = this->GetNumberOfInputConnections(2) > 0
+                               ? vtkMultiBlockDataSet::GetData(inputVector[2], 0)
+                               : nullptr;
+    if (landmarkBlocks && this->PredictRadius > 0)
+    {
+      checkOneBlockPerFrame(sequence, landmarkBlocks, "template fit", "landmarks");
+      predict = [&](int k, int from, const Points& fit)
+      {
+        const TriangleMesh a = frameMesh(sequence, from), b = frameMesh(sequence, k);
+        auto landmarksOf = [&](int f, const TriangleMesh& mesh)
+        {
+          return landmarkSurfacePoints(
+              vtkPolyData::SafeDownCast(landmarkBlocks->GetBlock(static_cast<unsigned>(f))),
+              mesh.numFaces(), "landmarks of " + frameName(sequence->GetBlock(f), f));
+        };
+        std::vector<Vec3> before, after;
+        pairLandmarks(a, landmarksOf(from, a), b, landmarksOf(k, b), before, after);
+        return predictMotion(fit, before, after, this->PredictRadius);
+      };
+    }
+    const std::vector<FrameFit> fits = fitTemplateSequence(
+        templateMesh, j, n, frameAt, targetsAt, options,
+        [this](int done, int total)
+        {
+          this->UpdateProgress(static_cast<double>(done) / total);
+          return !this->GetAbortExecute();
+        },
+        predict);
 
     auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
     vtkTable* table = vtkTable::GetData(outputVector, 1);
@@ -255,4 +281,5 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
   os << indent << "UseCorrespondence: " << this->UseCorrespondence << "\n";
   os << indent << "UseNearest: " << this->UseNearest << "\n";
+  os << indent << "PredictRadius: " << this->PredictRadius << "\n";
 }

@@ -7,6 +7,9 @@
  * share connectivity). Input port 1: the dense correspondences, output port 0 of
  * ctPatchCorrespondence: one copy of the template per frame with point data Matched and
  * TargetPosition and field data TemplateFrame. The template is the structure of those blocks.
+ * Input port 2 (optional): the landmarks of every frame, output port 1 of ctBodyFit; with them
+ * each frame's fit starts from its neighbour's moved by the landmarks' locally rigid motion
+ * (PredictRadius, see clothtrack/MotionPrediction.h), which follows fast turns better.
  *
  * Every template vertex gets an affine map, found by minimising
  * wc Ec + ws Es + wd Ed + wt Et (correspondence, smoothness, nearest-point data, temporal) in
@@ -16,8 +19,8 @@
  * outwards, each started from its neighbour's fit. See clothtrack/TemplateFit.h.
  *
  * Solver 0 (default) solves each round's normal equations to the relative residual
- * SolverTolerance, 1e-4 (sparse Cholesky factors reused as preconditioners); Solver 1 is the paper's L-BFGS,
- * NearestEvery iterations per round.
+ * SolverTolerance, 1e-4 (sparse Cholesky factors reused as preconditioners); Solver 1 is the
+ * paper's L-BFGS, NearestEvery iterations per round.
  *
  * Output port 0: vtkMultiBlockDataSet, the aligned template for every frame, with point data
  * Displacement (from the template), CorrespondenceUsed (0/1) and SurfaceDistance (to the
@@ -87,6 +90,11 @@ public:
   vtkGetMacro(UseNearest, bool);
   vtkBooleanMacro(UseNearest, bool);
 
+  /// With landmarks on input port 2: Gaussian width (metres) of the locally rigid motion that
+  /// predicts each frame's start; 0 starts from the neighbour's fit as it is.
+  vtkSetClampMacro(PredictRadius, double, 0.0, 100.0);
+  vtkGetMacro(PredictRadius, double);
+
   vtkTable* GetSummaryOutput();
 
 protected:
@@ -111,6 +119,7 @@ private:
   double MaximumNormalAngle = 90.0;
   bool UseCorrespondence = true;
   bool UseNearest = true;
+  double PredictRadius = 0.3;
 };
 
 #endif

@@ -17,6 +17,7 @@
 #include <clothtrack/Error.h>
 #include <clothtrack/FrameList.h>
 #include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/MotionPrediction.h>
 #include <clothtrack/Parallel.h>
 #include <clothtrack/SurfaceLocator.h>
 #include <clothtrack/TemplateSelection.h>
@@ -129,6 +130,7 @@ int runAlign(const Args& args)
   SequenceOptions seq;
   int threads = 0, forcedTemplate = -1;
   double truthDistance = 0.03;
+  double predictRadius = 0.3;
   TemplateFitOptions fit;
   PatchCorrespondenceOptions patches;
   po::options_description options("align options");
@@ -153,6 +155,9 @@ int runAlign(const Args& args)
       "patch radius tau_d (m)")("min-radius",
                                 po::value(&patches.minRadius)->default_value(patches.minRadius),
                                 "smallest patch kept, tau_s (m)")(
+      "predict-radius", po::value(&predictRadius)->default_value(predictRadius),
+      "each frame's fit starts from its neighbour's moved by the landmarks' locally rigid motion, "
+      "weighted over this radius (m; 0: from the neighbour's fit as it is)")(
       "truth-distance", po::value(&truthDistance)->default_value(truthDistance),
       "template vertices further than this from the ground truth have no error (m)");
   addSequenceOptions(options, seq);
@@ -170,6 +175,7 @@ int runAlign(const Args& args)
   if (!(patches.epsilon > 0) || !(patches.minRadius >= 0) || !(patches.maxRadius > 0))
     throw UsageError{"--epsilon and --max-radius must be positive, --min-radius at least 0"};
   if (!(truthDistance > 0)) throw UsageError{"--truth-distance must be positive"};
+  if (!(predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
   setThreadCount(threads);
   const bool skipBad = values["skip-bad-frames"].as<bool>();
   const auto start = Clock::now();
@@ -315,7 +321,8 @@ int runAlign(const Args& args)
       {"ground_truth", truthFiles},
       {"solver", solver},
       {"patches", {patches.epsilon, patches.minRadius, patches.maxRadius}},
-      {"truth_distance", truthDistance}};
+      {"truth_distance", truthDistance},
+      {"predict_radius", predictRadius}};
   const fs::path runKeyPath = work / "run.json";
   {
     std::ifstream in(runKeyPath);
@@ -401,7 +408,15 @@ int runAlign(const Args& args)
         }
         correspondSeconds += since(c0);
         const int previous = k < j ? k + 1 : k - 1;
-        const FrameFit result = fitter.fit(aligned[previous], frames[k], &*targets);
+        Points start = aligned[previous];
+        if (predictRadius > 0)
+        {
+          std::vector<Vec3> before, after;
+          pairLandmarks(frames[previous], landmarks[previous], frames[k], landmarks[k], before,
+                        after);
+          start = predictMotion(start, before, after, predictRadius);
+        }
+        const FrameFit result = fitter.fit(start, frames[k], &*targets);
         fitSeconds += result.seconds;
         aligned[k] = result.positions;
         for (int i = 0; i < templ.numVertices(); ++i) used[i] = result.used[i];
@@ -454,6 +469,7 @@ int runAlign(const Args& args)
   metrics["resumed_frames"] = resumed;
   metrics["threads"] = threadCount();
   metrics["solver"] = solver;
+  metrics["predict_radius_m"] = predictRadius;
   std::vector<double> landmarkCounts;
   for (const auto& l : landmarks) landmarkCounts.push_back(static_cast<double>(l.size()));
   metrics["landmarks_per_frame"] = landmarkCounts;

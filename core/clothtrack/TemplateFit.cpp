@@ -473,7 +473,8 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
                                           const std::function<const TriangleMesh&(int)>& frame,
                                           const std::function<const VertexTargets*(int)>& targets,
                                           const TemplateFitOptions& options,
-                                          const std::function<bool(int, int)>& progress)
+                                          const std::function<bool(int, int)>& progress,
+                                          const StartPrediction& start)
 {
   if (templateFrame < 0 || templateFrame >= numFrames)
     throw Error("Template fit: the template frame " + std::to_string(templateFrame) +
@@ -489,7 +490,8 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
     if (progress && !progress(done, numFrames)) throw Error("Template fit: cancelled.");
     try
     {
-      fits[k] = fitter.fit(fits[from].positions, frame(k), targets(k));
+      fits[k] = fitter.fit(start ? start(k, from, fits[from].positions) : fits[from].positions,
+                           frame(k), targets(k));
     }
     catch (const Error& e)
     {

@@ -112,11 +112,14 @@ private:
 /// The paper's order: the template frame keeps the template; frames j-1 .. 0, then j+1 .. N-1,
 /// each started from its neighbour's fit. `frame(k)` and `targets(k)` give frame k and its
 /// correspondences (null for none); `progress(done, total)` is called after each frame and may
-/// return false to cancel (Error thrown).
+/// return false to cancel (Error thrown). `start(k, from, fit)`, when given, turns the fit of
+/// frame `from` into the start for frame k (e.g. predictMotion); by default the fit itself.
+using StartPrediction = std::function<Points(int k, int from, const Points& fitOfFrom)>;
 std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int templateFrame,
                                           int numFrames,
                                           const std::function<const TriangleMesh&(int)>& frame,
                                           const std::function<const VertexTargets*(int)>& targets,
                                           const TemplateFitOptions& options = {},
-                                          const std::function<bool(int, int)>& progress = {});
+                                          const std::function<bool(int, int)>& progress = {},
+                                          const StartPrediction& start = {});
 } // namespace clothtrack

@@ -58,6 +58,7 @@ class AlignmentPipelineTest(unittest.TestCase):
         fit = clothtrack.ctTemplateFit()
         fit.SetInputData(0, sequence)
         fit.SetInputConnection(1, correspondence.GetOutputPort(0))
+        fit.SetInputConnection(2, body.GetOutputPort(1))  # landmarks: starts follow their motion
         error_filter = clothtrack.ctAlignmentError()
         error_filter.SetInputConnection(0, fit.GetOutputPort(0))
         error_filter.SetInputData(1, truth_sequence)

@@ -1,0 +1,25 @@
+#pragma once
+// A start for fitting the next frame that already follows the gross motion: the landmarks seen
+// on both frames give, around every point, a rigid motion (least squares, Gaussian weights of the
+// landmarks' distance to the point), which moves the point. Fast turns and swings, which a fit
+// started from the previous frame's shape must otherwise catch up with, are then mostly done.
+#include "TriangleMesh.h"
+
+#include <vector>
+
+namespace clothtrack
+{
+struct OrientedSurfacePoint;
+
+/// Positions of the landmarks found on both frames, paired by id: `before` on `a`, `after` on
+/// `b`.
+void pairLandmarks(const TriangleMesh& a, const std::vector<OrientedSurfacePoint>& onA,
+                   const TriangleMesh& b, const std::vector<OrientedSurfacePoint>& onB,
+                   std::vector<Vec3>& before, std::vector<Vec3>& after);
+
+/// Moves `points` by the locally weighted rigid motion taking `before` to `after` (paired
+/// landmark positions, same order). `radius` (metres) is the Gaussian width of the weights.
+/// Fewer than three pairs: a translation by their mean motion (none without pairs).
+Points predictMotion(const Points& points, const std::vector<Vec3>& before,
+                     const std::vector<Vec3>& after, double radius = 0.3);
+} // namespace clothtrack
