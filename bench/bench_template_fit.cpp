@@ -52,6 +52,7 @@ double solverTolerance = 0;   // 0: the default
 std::vector<FitStage> stages; // empty: the default
 double outlier = -1;          // negative: the default
 double predictRadius = 0;     // > 0: starts predicted from the landmarks' motion
+double predictOffset = 1e9;   // landmarks further from the body are not used for it
 
 Variant variant(const std::string& name)
 {
@@ -191,7 +192,7 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
       {
         std::vector<Vec3> before, after;
         pairLandmarks(s.captures[from], s.landmarks[from], s.captures[k], s.landmarks[k], before,
-                      after);
+                      after, predictOffset);
         return predictMotion(fit, before, after, predictRadius);
       };
     const auto fits = fitTemplateSequence(
@@ -237,6 +238,8 @@ int main(int argc, char** argv)
         curve = value();
       else if (args[i] == "--tolerance")
         solverTolerance = std::stod(value());
+      else if (args[i] == "--predict-offset")
+        predictOffset = std::stod(value());
       else if (args[i] == "--predict")
         predictRadius = std::stod(value());
       else if (args[i] == "--rounds")

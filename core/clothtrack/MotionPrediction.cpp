@@ -40,13 +40,13 @@ void rigidMotion(const std::vector<Vec3>& before, const std::vector<Vec3>& after
 
 void pairLandmarks(const TriangleMesh& a, const std::vector<OrientedSurfacePoint>& onA,
                    const TriangleMesh& b, const std::vector<OrientedSurfacePoint>& onB,
-                   std::vector<Vec3>& before, std::vector<Vec3>& after)
+                   std::vector<Vec3>& before, std::vector<Vec3>& after, double maxOffset)
 {
   before.clear();
   after.clear();
   for (const OrientedSurfacePoint& p : onA)
     for (const OrientedSurfacePoint& q : onB)
-      if (p.id == q.id)
+      if (p.id == q.id && std::abs(p.offset) <= maxOffset && std::abs(q.offset) <= maxOffset)
       {
         before.push_back(surfacePosition(a, p.face, p.bary));
         after.push_back(surfacePosition(b, q.face, q.bary));

@@ -5,6 +5,7 @@
 // started from the previous frame's shape must otherwise catch up with, are then mostly done.
 #include "TriangleMesh.h"
 
+#include <limits>
 #include <vector>
 
 namespace clothtrack
@@ -12,10 +13,12 @@ namespace clothtrack
 struct OrientedSurfacePoint;
 
 /// Positions of the landmarks found on both frames, paired by id: `before` on `a`, `after` on
-/// `b`.
+/// `b`. Landmarks further than `maxOffset` from the body (on loose cloth) on either frame are
+/// left out.
 void pairLandmarks(const TriangleMesh& a, const std::vector<OrientedSurfacePoint>& onA,
                    const TriangleMesh& b, const std::vector<OrientedSurfacePoint>& onB,
-                   std::vector<Vec3>& before, std::vector<Vec3>& after);
+                   std::vector<Vec3>& before, std::vector<Vec3>& after,
+                   double maxOffset = std::numeric_limits<double>::infinity());
 
 /// Moves `points` by the locally weighted rigid motion taking `before` to `after` (paired
 /// landmark positions, same order). `radius` (metres) is the Gaussian width of the weights.
