@@ -53,12 +53,14 @@ std::vector<FitStage> stages; // empty: the default
 double outlier = -1;          // negative: the default
 double predictRadius = 0;     // > 0: starts predicted from the landmarks' motion
 double predictOffset = 1e9;   // landmarks further from the body are not used for it
+double lengthScale = 0;       // 0: the default
 
 Variant variant(const std::string& name)
 {
   Variant v{name, {}};
   if (roundsPerStage > 0) v.options.roundsPerStage = roundsPerStage;
   if (solverTolerance > 0) v.options.solverTolerance = solverTolerance;
+  if (lengthScale > 0) v.options.lengthScale = lengthScale;
   if (!stages.empty()) v.options.stages = stages;
   if (outlier >= 0) v.options.correspondenceOutlier = outlier;
   if (name == "lbfgs" || name == "lbfgs-no-ec") v.options.solver = FitSolver::LBFGS;
@@ -238,6 +240,8 @@ int main(int argc, char** argv)
         curve = value();
       else if (args[i] == "--tolerance")
         solverTolerance = std::stod(value());
+      else if (args[i] == "--length-scale")
+        lengthScale = std::stod(value());
       else if (args[i] == "--predict-offset")
         predictOffset = std::stod(value());
       else if (args[i] == "--predict")

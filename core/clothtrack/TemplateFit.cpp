@@ -312,6 +312,8 @@ void checkOptions(const TemplateFitOptions& o)
                   "otherwise vertices without data are undetermined.");
   }
   if (o.roundsPerStage < 1) throw Error("Template fit: roundsPerStage must be at least 1.");
+  if (!(o.lengthScale > 0 && std::isfinite(o.lengthScale)))
+    throw Error("Template fit: the length scale must be positive.");
   if (!(o.solverTolerance > 0 && o.solverTolerance < 1))
     throw Error("Template fit: the solver tolerance must be in (0, 1).");
   if (o.nearestEvery < 1) throw Error("Template fit: nearestEvery must be at least 1.");
@@ -351,8 +353,10 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
     throw Error("Template fit: the correspondences do not have one entry per template vertex.");
 
   const Vec3 centroid = start.colwise().mean().transpose();
+  // Lengths in the energy are in units of 1 / lengthScale metres (see the option).
+  const double scale = options_.lengthScale;
   Eigen::Matrix<double, Eigen::Dynamic, 4> b(n, 4);
-  b.leftCols<3>() = start.rowwise() - centroid.transpose();
+  b.leftCols<3>() = (start.rowwise() - centroid.transpose()) * scale;
   b.col(3).setOnes();
 
   FrameFit result;
@@ -363,7 +367,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
       if (targets->matched[i] && targets->position.row(i).allFinite())
       {
         result.used[i] = 1;
-        correspondence.row(i) = targets->position.row(i) - centroid.transpose();
+        correspondence.row(i) = (targets->position.row(i) - centroid.transpose()) * scale;
       }
   const int correspondenceCount =
       static_cast<int>(std::count(result.used.begin(), result.used.end(), 1));
@@ -394,7 +398,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
     parallelFor(0, n,
                 [&](int i)
                 {
-                  const Vec3 query = p.row(i).transpose() + centroid;
+                  const Vec3 query = p.row(i).transpose() / scale + centroid;
                   const SurfacePoint s =
                       locator.closestPoint(query, options_.maxNearestDistance, hint[i]);
                   hasNearest[i] = 0;
@@ -402,7 +406,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
                   hint[i] = s.face;
                   if (normals.row(i).dot(frameNormals.row(s.face)) <= minCosine) return;
                   hasNearest[i] = 1;
-                  nearest.row(i) = (s.position - centroid).transpose();
+                  nearest.row(i) = (s.position - centroid).transpose() * scale;
                 });
     return static_cast<int>(std::count(hasNearest.begin(), hasNearest.end(), 1));
   };
@@ -427,7 +431,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
         for (int i = 0; i < n; ++i)
         {
           active[i] = result.used[i] && (before.row(i) - correspondence.row(i)).norm() <=
-                                            options_.correspondenceOutlier;
+                                            options_.correspondenceOutlier * scale;
           activeCount += active[i];
         }
       }
@@ -447,12 +451,12 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
         result.iterations += minimiseLBFGS(q, X, options_.nearestEvery);
       ++result.rounds;
       result.energy = q.energy(X);
-      const double moved = (positions(X) - before).rowwise().norm().maxCoeff();
+      const double moved = (positions(X) - before).rowwise().norm().maxCoeff() / scale;
       if (options_.solver == FitSolver::Exact && moved < options_.convergence) break;
     }
   }
   result.used = active;
-  result.positions = positions(X).rowwise() + centroid.transpose();
+  result.positions = (positions(X) / scale).rowwise() + centroid.transpose();
   if (!result.positions.allFinite()) throw Error("Template fit: the solve diverged.");
   result.surfaceDistance.resize(n);
   parallelFor(0, n,

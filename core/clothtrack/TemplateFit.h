@@ -59,6 +59,10 @@ struct TemplateFitOptions
   /// Correspondences further than this from the template as fitted so far are dropped before
   /// each round but the first (metres; 0 keeps them all, as the paper does).
   double correspondenceOutlier = 0.0;
+  /// The data terms (Ec, Ed) are squared lengths, the linear part of the regularisers (Es, Et)
+  /// is not: the unit of length sets their balance. Lengths enter the energy multiplied by this
+  /// (1: metres, 100: centimetres); thresholds and results stay in metres.
+  double lengthScale = 1.0;
   double maxNearestDistance = 0.2; ///< metres
   double maxNormalAngle = 90.0;    ///< degrees
   /// Ablations: without Ec (the paper's Figure 6) or without Ed.

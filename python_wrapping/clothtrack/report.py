@@ -114,7 +114,7 @@ def _render_frame(out, metrics, k, path, error_range):
             bar = vtkScalarBarActor()
             bar.SetLookupTable(mapper.GetLookupTable())
             bar.SetTitle(label)
-            bar.SetNumberOfLabels(5)
+            bar.SetNumberOfLabels(6)
             bar.SetWidth(0.12)
             bar.SetHeight(0.6)
             bar.SetPosition(0.85, 0.2)

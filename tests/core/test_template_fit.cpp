@@ -147,6 +147,40 @@ TEST(TemplateFit, SequenceStartsEachFrameFromItsNeighbour)
   EXPECT_EQ((fits[2].positions - frames[2].V).norm(), 0.0);
 }
 
+TEST(TemplateFit, LengthScaleIsTheUnitOfTheEnergy)
+{
+  // The same scene a tenth the size, with lengths multiplied by 10 in the energy (and the
+  // metre thresholds scaled with it), is the same problem: the same fit, a tenth the size.
+  const TriangleMesh t = limb();
+  const TriangleMesh frame = moved(t, 1.5, Vec3(0.05, 0.02, -0.03));
+  const VertexTargets targets = everyNth(frame, 4);
+  TemplateFitOptions metres;
+  metres.solverTolerance = 1e-10;
+  TemplateFitOptions scaled = metres;
+  scaled.lengthScale = 10.0;
+  scaled.maxNearestDistance = metres.maxNearestDistance / 10;
+  scaled.convergence = metres.convergence / 10;
+  TriangleMesh small = t, smallFrame = frame;
+  small.V /= 10;
+  smallFrame.V /= 10;
+  VertexTargets smallTargets = targets;
+  smallTargets.position /= 10;
+  const FrameFit a = TemplateFitter(t, metres).fit(t.V, frame, &targets);
+  const FrameFit b = TemplateFitter(small, scaled).fit(small.V, smallFrame, &smallTargets);
+  EXPECT_EQ(a.rounds, b.rounds);
+  EXPECT_LT((a.positions - 10 * b.positions).cwiseAbs().maxCoeff(), 1e-6);
+  // In centimetres the data terms weigh 10^4 times more against the regularisers' linear part:
+  // a different fit, still onto the frame.
+  TemplateFitOptions centimetres;
+  centimetres.lengthScale = 100.0;
+  const FrameFit c = TemplateFitter(t, centimetres).fit(t.V, frame, &targets);
+  EXPECT_GT((c.positions - a.positions).rowwise().norm().mean(), 1e-4);
+  EXPECT_LT(meanError(c.positions, frame.V), 0.01);
+  TemplateFitOptions zero;
+  zero.lengthScale = 0;
+  EXPECT_THROW(TemplateFitter(t, zero), Error);
+}
+
 TEST(TemplateFit, RefusesBadInput)
 {
   const TriangleMesh t = limb();
