@@ -151,15 +151,7 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
   {
     if (static_cast<int>(k) == j) continue;
     const FrameCorrespondence c = patches.correspond(s.captures[k], s.landmarks[k]);
-    VertexTargets& t = targets[k];
-    t.position.resize(templ.numVertices(), 3);
-    t.matched.assign(templ.numVertices(), 0);
-    for (int v = 0; v < templ.numVertices(); ++v)
-      if (c.vertices[v].matched())
-      {
-        t.matched[v] = 1;
-        t.position.row(v) = c.vertices[v].position.transpose();
-      }
+    targets[k] = vertexTargets(c);
     matched += c.matchedFraction();
   }
   const int frames = static_cast<int>(s.captures.size());

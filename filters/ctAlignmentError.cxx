@@ -93,7 +93,7 @@ int ctAlignmentError::RequestData(vtkInformation*, vtkInformationVector** inputV
     std::vector<vtkSmartPointer<vtkDoubleArray>> statistics;
     for (const char* name : statisticNames)
       statistics.push_back(namedArray<vtkDoubleArray>(name, n));
-    std::vector<double> pooled;
+    std::vector<Eigen::VectorXd> errors(n);
     for (int k = 0; k < n; ++k)
     {
       const TriangleMesh frame = frameMesh(aligned, k);
@@ -101,37 +101,37 @@ int ctAlignmentError::RequestData(vtkInformation*, vtkInformationVector** inputV
         throw Error("alignment error: " + frameName(aligned->GetBlock(k), k) + " has " +
                     std::to_string(frame.numVertices()) + " vertices, the template " +
                     std::to_string(templateMesh.numVertices()));
-      const Eigen::VectorXd errors = vertexErrors(frame.V, frameMesh(truthSequence, k), anchors);
+      errors[k] = vertexErrors(frame.V, frameMesh(truthSequence, k), anchors);
       auto block = vtkSmartPointer<vtkPolyData>::New();
       block->ShallowCopy(aligned->GetBlock(k));
-      auto errorArray = namedArray<vtkDoubleArray>("Error", errors.size());
-      for (Eigen::Index i = 0; i < errors.size(); ++i) errorArray->SetValue(i, errors[i]);
+      auto errorArray = namedArray<vtkDoubleArray>("Error", errors[k].size());
+      for (Eigen::Index i = 0; i < errors[k].size(); ++i) errorArray->SetValue(i, errors[k][i]);
       block->GetPointData()->AddArray(errorArray);
       output->SetBlock(k, block);
       output->GetMetaData(static_cast<unsigned>(k))
           ->Set(vtkCompositeDataSet::NAME(), ("aligned_" + std::to_string(k)).c_str());
-
-      const ErrorStatistics s = errorStatistics(errors);
+      this->UpdateProgress(static_cast<double>(k + 1) / n);
+    }
+    const SequenceErrors summary = sequenceErrors(errors, j);
+    for (int k = 0; k < n; ++k)
+    {
+      const ErrorStatistics& s = summary.perFrame[k];
       frameColumn->SetValue(k, k);
       verticesColumn->SetValue(k, s.count);
       const double values[] = {s.mean, s.median, s.p90, s.max, s.within5cm, s.within10cm};
       for (size_t c = 0; c < statistics.size(); ++c) statistics[c]->SetValue(k, values[c]);
-      if (k != j) pooled.insert(pooled.end(), errors.data(), errors.data() + errors.size());
-      this->UpdateProgress(static_cast<double>(k + 1) / n);
     }
     frameTable->AddColumn(frameColumn);
     for (auto& column : statistics) frameTable->AddColumn(column);
     frameTable->AddColumn(verticesColumn);
 
-    std::vector<double> thresholds;
-    for (int t = 0; t <= 40; ++t) thresholds.push_back(0.005 * t);
-    const std::vector<double> fractions = cumulativeCurve(pooled, thresholds);
-    auto thresholdColumn = namedArray<vtkDoubleArray>("Threshold", thresholds.size());
-    auto fractionColumn = namedArray<vtkDoubleArray>("Fraction", thresholds.size());
-    for (size_t t = 0; t < thresholds.size(); ++t)
+    const size_t rows = summary.thresholds.size();
+    auto thresholdColumn = namedArray<vtkDoubleArray>("Threshold", rows);
+    auto fractionColumn = namedArray<vtkDoubleArray>("Fraction", rows);
+    for (size_t t = 0; t < rows; ++t)
     {
-      thresholdColumn->SetValue(t, thresholds[t]);
-      fractionColumn->SetValue(t, fractions[t]);
+      thresholdColumn->SetValue(t, summary.thresholds[t]);
+      fractionColumn->SetValue(t, summary.fractions[t]);
     }
     curveTable->AddColumn(thresholdColumn);
     curveTable->AddColumn(fractionColumn);

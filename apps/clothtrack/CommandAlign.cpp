@@ -89,20 +89,6 @@ std::pair<int, int> frameRange(const std::string& spec, int count)
   return {begin, end};
 }
 
-VertexTargets toTargets(const FrameCorrespondence& c)
-{
-  const int n = static_cast<int>(c.vertices.size());
-  VertexTargets t;
-  t.position.resize(n, 3);
-  t.matched.resize(n);
-  for (int i = 0; i < n; ++i)
-  {
-    t.position.row(i) = c.vertices[i].position.transpose();
-    t.matched[i] = c.vertices[i].matched();
-  }
-  return t;
-}
-
 void addArray(vtkPolyData* mesh, const char* name, const Eigen::Ref<const Eigen::MatrixXd>& values)
 {
   vtkNew<vtkDoubleArray> array;
@@ -114,7 +100,7 @@ void addArray(vtkPolyData* mesh, const char* name, const Eigen::Ref<const Eigen:
   mesh->GetPointData()->AddArray(array);
 }
 
-/// Mean distance from each point to the surface behind `locator`.
+/// Distance from each point to the surface behind `locator`.
 Eigen::VectorXd distances(const Points& points, const SurfaceLocator& locator)
 {
   Eigen::VectorXd d(points.rows());
@@ -326,7 +312,6 @@ int runAlign(const Args& args)
   const fs::path runKeyPath = work / "run.json";
   {
     std::ifstream in(runKeyPath);
-    nlohmann::json previous;
     bool same = false;
     if (in)
     {
@@ -362,6 +347,7 @@ int runAlign(const Args& args)
   std::vector<Points> aligned(n);
   std::vector<Eigen::VectorXd> errors(n);
   std::vector<double> frameSeconds(n, 0.0);
+  std::vector<double> toSurface(n, -1.0); // mean distance to the frame; -1: not known yet
   double correspondSeconds = 0, fitSeconds = 0;
   int resumed = 0;
   std::vector<int> order = {j};
@@ -403,7 +389,7 @@ int runAlign(const Args& args)
         {
           if (!templatePatches)
             templatePatches = std::make_unique<TemplatePatches>(templ, landmarks[j], patches);
-          targets = toTargets(templatePatches->correspond(frames[k], landmarks[k]));
+          targets = vertexTargets(templatePatches->correspond(frames[k], landmarks[k]));
           writeTargets(targetPath, files[k], *targets);
         }
         correspondSeconds += since(c0);
@@ -422,6 +408,7 @@ int runAlign(const Args& args)
         for (int i = 0; i < templ.numVertices(); ++i) used[i] = result.used[i];
         surfaceDistance = result.surfaceDistance;
       }
+      toSurface[k] = surfaceDistance.mean(); // zero for the template on its own frame
       frameSeconds[k] = since(frameStart);
       vtkSmartPointer<vtkPolyData> mesh = toPolyData(TriangleMesh{aligned[k], templ.F});
       addArray(mesh, "Displacement", aligned[k] - templ.V);
@@ -475,35 +462,17 @@ int runAlign(const Args& args)
   metrics["landmarks_per_frame"] = landmarkCounts;
   if (anchors)
   {
-    // Pooled over every vertex of every frame but the template frame, whose error is that of
-    // the ground truth's own surface against the capture.
-    std::vector<double> pooled, perFrameMean, perFrameMedian, perFrameP90, perFrameMax;
-    std::vector<double> perFrameWithin10;
-    for (int k = 0; k < n; ++k)
+    const SequenceErrors summary = sequenceErrors(errors, j);
+    std::vector<double> perFrameMean, perFrameMedian, perFrameP90, perFrameMax, perFrameWithin10;
+    for (const ErrorStatistics& s : summary.perFrame)
     {
-      const ErrorStatistics s = errorStatistics(errors[k]);
       perFrameMean.push_back(s.mean);
       perFrameMedian.push_back(s.median);
       perFrameP90.push_back(s.p90);
       perFrameMax.push_back(s.max);
       perFrameWithin10.push_back(s.within10cm);
-      if (k != j)
-        for (Eigen::Index i = 0; i < errors[k].size(); ++i) pooled.push_back(errors[k][i]);
     }
-    const ErrorStatistics all = errorStatistics(pooled);
-    int worst = 0;
-    for (int k = 0; k < n; ++k)
-      if (perFrameMean[k] > perFrameMean[worst]) worst = k;
-    // Drift: least-squares slope of the per-frame mean against the distance from the template.
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (int k = 0; k < n; ++k)
-    {
-      const double x = std::abs(k - j), y = perFrameMean[k];
-      sx += x, sy += y, sxx += x * x, sxy += x * y;
-    }
-    const double drift = (n * sxx - sx * sx) > 0 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) : 0;
-    std::vector<double> thresholds;
-    for (int t = 0; t <= 40; ++t) thresholds.push_back(0.005 * t);
+    const ErrorStatistics& all = summary.pooled;
     metrics["ground_truth"] = truthInput;
     metrics["vertices_with_ground_truth"] = anchors->count();
     metrics["mean_vertex_error_m"] = all.mean;
@@ -512,25 +481,25 @@ int runAlign(const Args& args)
     metrics["max_vertex_error_m"] = all.max;
     metrics["within_5cm"] = all.within5cm;
     metrics["within_10cm"] = all.within10cm;
-    metrics["worst_frame"] = worst;
-    metrics["worst_frame_mean_error_m"] = perFrameMean[worst];
-    metrics["drift_m_per_frame"] = drift;
+    metrics["worst_frame"] = summary.worstFrame;
+    metrics["worst_frame_mean_error_m"] = perFrameMean[summary.worstFrame];
+    metrics["drift_m_per_frame"] = summary.driftPerFrame;
     metrics["per_frame_mean_error_m"] = perFrameMean;
     metrics["per_frame_median_error_m"] = perFrameMedian;
     metrics["per_frame_p90_error_m"] = perFrameP90;
     metrics["per_frame_max_error_m"] = perFrameMax;
     metrics["per_frame_within_10cm"] = perFrameWithin10;
-    metrics["cumulative_error"] = {{"threshold_m", thresholds},
-                                   {"fraction", cumulativeCurve(pooled, thresholds)}};
+    metrics["cumulative_error"] = {{"threshold_m", summary.thresholds},
+                                   {"fraction", summary.fractions}};
   }
   // Without ground truth too: how well the result covers each frame, and how smoothly it moves.
-  std::vector<double> toSurface(n), coverage(n), jitter;
+  std::vector<double> coverage(n), jitter;
   parallelFor(
       0, n,
       [&](int k)
       {
-        const SurfaceLocator frameLocator(frames[k]);
-        toSurface[k] = distances(aligned[k], frameLocator).mean();
+        if (toSurface[k] < 0) // resumed: the fit's own distances are not at hand
+          toSurface[k] = distances(aligned[k], SurfaceLocator(frames[k])).mean();
         const TriangleMesh alignedMesh{aligned[k], templ.F};
         const SurfaceLocator alignedLocator(alignedMesh);
         coverage[k] = distances(frames[k].V, alignedLocator).mean();

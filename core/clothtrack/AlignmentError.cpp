@@ -117,4 +117,30 @@ std::vector<double> cumulativeCurve(const std::vector<double>& errors,
             : static_cast<double>(std::upper_bound(e.begin(), e.end(), t) - e.begin()) / e.size());
   return fractions;
 }
+
+SequenceErrors sequenceErrors(const std::vector<Eigen::VectorXd>& perFrame, int templateFrame)
+{
+  const int n = static_cast<int>(perFrame.size());
+  SequenceErrors out;
+  std::vector<double> pooled;
+  for (int k = 0; k < n; ++k)
+  {
+    out.perFrame.push_back(errorStatistics(perFrame[k]));
+    if (k != templateFrame)
+      pooled.insert(pooled.end(), perFrame[k].data(), perFrame[k].data() + perFrame[k].size());
+    if (out.perFrame[k].mean > out.perFrame[out.worstFrame].mean) out.worstFrame = k;
+  }
+  out.pooled = errorStatistics(pooled);
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (int k = 0; k < n; ++k)
+  {
+    const double x = std::abs(k - templateFrame), y = out.perFrame[k].mean;
+    sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  const double denominator = n * sxx - sx * sx;
+  out.driftPerFrame = denominator > 0 ? (n * sxy - sx * sy) / denominator : 0.0;
+  for (int t = 0; t <= 40; ++t) out.thresholds.push_back(0.005 * t);
+  out.fractions = cumulativeCurve(pooled, out.thresholds);
+  return out;
+}
 } // namespace clothtrack

@@ -43,4 +43,17 @@ ErrorStatistics errorStatistics(const Eigen::VectorXd& errors);
 /// Fraction of errors at or below each threshold (a cumulative error curve).
 std::vector<double> cumulativeCurve(const std::vector<double>& errors,
                                     const std::vector<double>& thresholds);
+
+/// A whole sequence's errors (one vector per frame, from vertexErrors).
+struct SequenceErrors
+{
+  std::vector<ErrorStatistics> perFrame;
+  /// Every vertex of every frame but the template frame, whose error is only that of the
+  /// ground truth's own surface against the capture.
+  ErrorStatistics pooled;
+  int worstFrame = 0;       ///< highest per-frame mean
+  double driftPerFrame = 0; ///< least-squares slope of the per-frame mean against |k - template|
+  std::vector<double> thresholds, fractions; ///< cumulative curve of the pooled errors, 0-20 cm
+};
+SequenceErrors sequenceErrors(const std::vector<Eigen::VectorXd>& perFrame, int templateFrame);
 } // namespace clothtrack

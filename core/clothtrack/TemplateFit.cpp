@@ -4,6 +4,7 @@
 #include "MeshTopology.h"
 #include "MeshValidation.h"
 #include "Parallel.h"
+#include "PatchCorrespondence.h"
 #include "SurfaceLocator.h"
 
 #include <Eigen/SparseCholesky>
@@ -108,6 +109,21 @@ struct Quadratic
 int VertexTargets::count() const
 {
   return static_cast<int>(std::count(matched.begin(), matched.end(), 1));
+}
+
+VertexTargets vertexTargets(const FrameCorrespondence& correspondence)
+{
+  const int n = static_cast<int>(correspondence.vertices.size());
+  VertexTargets t;
+  t.position = Points::Zero(n, 3);
+  t.matched.assign(n, 0);
+  for (int i = 0; i < n; ++i)
+    if (correspondence.vertices[i].matched())
+    {
+      t.matched[i] = 1;
+      t.position.row(i) = correspondence.vertices[i].position.transpose();
+    }
+  return t;
 }
 
 struct TemplateFitter::Impl

@@ -78,6 +78,10 @@ struct VertexTargets
   int count() const;
 };
 
+struct FrameCorrespondence;
+/// The template vertices a patch correspondence matched, as fit targets.
+VertexTargets vertexTargets(const FrameCorrespondence& correspondence);
+
 struct FrameFit
 {
   Points positions;                ///< fitted template vertices

@@ -80,3 +80,24 @@ TEST(AlignmentError, MismatchedSizesAreErrors)
   bad(1, 1) = std::nan("");
   EXPECT_THROW(anchorToTruth(bad, truth), Error);
 }
+
+TEST(AlignmentError, SequenceSummaryLeavesTheTemplateFrameOutOfThePool)
+{
+  // Frame k's errors are all 1 cm times its distance from the template frame 1, plus a large
+  // error on the template frame itself that the pool must not see.
+  std::vector<Eigen::VectorXd> frames = {
+      Eigen::VectorXd::Constant(4, 0.01), Eigen::VectorXd::Constant(4, 0.5),
+      Eigen::VectorXd::Constant(4, 0.01), Eigen::VectorXd::Constant(4, 0.02)};
+  frames[2][3] = std::nan(""); // no ground truth
+  const SequenceErrors s = sequenceErrors(frames, 1);
+  ASSERT_EQ(s.perFrame.size(), 4u);
+  EXPECT_EQ(s.pooled.count, 11);
+  EXPECT_NEAR(s.pooled.mean, (4 * 0.01 + 3 * 0.01 + 4 * 0.02) / 11, 1e-12);
+  EXPECT_EQ(s.worstFrame, 1);
+  EXPECT_EQ(s.perFrame[2].count, 3);
+  EXPECT_NEAR(s.fractions.back(), 1.0, 1e-12);
+  EXPECT_NEAR(s.thresholds[2], 0.01, 1e-12);
+  // Means 0.01, 0.5, 0.01, 0.02 at distances 1, 0, 1, 2: the template frame's 0.5 at distance 0
+  // makes the slope negative.
+  EXPECT_LT(s.driftPerFrame, 0.0);
+}
