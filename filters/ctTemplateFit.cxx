@@ -237,6 +237,11 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
       vtkSmartPointer<vtkPolyData> block = alignedPolyData(templateData, templateMesh, fit);
       addFieldValue(block->GetFieldData(), "FrameIndex", k);
       addFieldValue(block->GetFieldData(), "TemplateFrame", j);
+      // The frame's own time and name, so that players and writers label it as its input.
+      if (auto* input = vtkPolyData::SafeDownCast(sequence->GetBlock(static_cast<unsigned>(k))))
+        for (const char* name : {"TimeValue", "FrameNumber", "SourceFile"})
+          if (vtkAbstractArray* array = input->GetFieldData()->GetAbstractArray(name))
+            block->GetFieldData()->AddArray(array);
       output->SetBlock(k, block);
       output->GetMetaData(static_cast<unsigned>(k))
           ->Set(vtkCompositeDataSet::NAME(), ("aligned_" + std::to_string(k)).c_str());

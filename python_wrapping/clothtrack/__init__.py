@@ -7,6 +7,11 @@ Every stage is a VTK algorithm and chains with VTK's own filters::
     reader.SetFileName("frames/")
     reader.UpdateInformation()
     print(reader.GetNumberOfFrames())
+
+or run the whole pipeline in one call::
+
+    result = clothtrack.align("frames/", ground_truth="ground_truth/")
+    print(result.metrics["mean_vertex_error_m"], result.positions.shape)
 """
 
 # VTK's own modules must be loaded before the wrapped ClothTrack modules that derive from them.
@@ -17,5 +22,6 @@ from vtkmodules import vtkCommonExecutionModel as _vtkCommonExecutionModel  # no
 from .ctReaders import *  # noqa: F401,F403
 from .ctFilters import *  # noqa: F401,F403
 from .sequence import frames_as_numpy, read_sequence  # noqa: F401
+from .pipeline import Alignment, align  # noqa: F401
 
 __version__ = "0.1.0"

@@ -1,0 +1,133 @@
+"""The whole pipeline in one call: clothtrack.align(frames, ...)."""
+
+import numpy as np
+from vtkmodules.util import numpy_support
+
+from .sequence import _ErrorCatcher, read_sequence
+
+
+class Alignment:
+    """The result of align(): one template mesh deformed through the sequence.
+
+    aligned         list of vtkPolyData, one per frame, all with the template's connectivity and
+                    the point arrays Displacement, CorrespondenceUsed, SurfaceDistance (and Error
+                    with a ground truth)
+    positions       numpy array (frames, vertices, 3): the aligned vertex positions
+    faces           numpy array (triangles, 3): the template's triangles
+    template_frame  index of the frame the template was taken from
+    errors          numpy array (frames, vertices) of vertex errors in metres (NaN where a vertex has
+                    no ground truth), or None without a ground truth
+    metrics         dict with the keys of the app's metrics.json: frames, template_frame,
+                    mean_surface_distance_m and, with a ground truth, mean_vertex_error_m,
+                    median_vertex_error_m, p90_vertex_error_m, max_vertex_error_m, within_5cm,
+                    within_10cm, per_frame_mean_error_m (the template frame is left out of the
+                    pooled figures, as in the app)
+    """
+
+    def __init__(self, aligned, template_frame, errors):
+        self.aligned = aligned
+        self.template_frame = template_frame
+        self.positions = np.stack([numpy_support.vtk_to_numpy(a.GetPoints().GetData()) for a in aligned])
+        self.faces = numpy_support.vtk_to_numpy(aligned[0].GetPolys().GetConnectivityArray()).reshape(-1, 3)
+        self.errors = errors
+        distances = [numpy_support.vtk_to_numpy(a.GetPointData().GetArray("SurfaceDistance")) for a in aligned]
+        self.metrics = {
+            "frames": len(aligned),
+            "template_frame": template_frame,
+            "mean_surface_distance_m": float(np.mean([d.mean() for d in distances])),
+        }
+        if errors is not None:
+            pooled = np.delete(errors, template_frame, axis=0) if len(aligned) > 1 else errors
+            pooled = pooled[np.isfinite(pooled)]
+            self.metrics.update({
+                "mean_vertex_error_m": float(pooled.mean()),
+                "median_vertex_error_m": float(np.median(pooled)),
+                "p90_vertex_error_m": float(np.percentile(pooled, 90)),
+                "max_vertex_error_m": float(pooled.max()),
+                "within_5cm": float((pooled < 0.05).mean()),
+                "within_10cm": float((pooled < 0.10).mean()),
+                "per_frame_mean_error_m": [float(np.nanmean(e)) for e in errors],
+            })
+
+
+def _as_sequence(frames, frame_rate):
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    if isinstance(frames, vtkMultiBlockDataSet):
+        return frames
+    if isinstance(frames, (str, bytes)) or hasattr(frames, "__fspath__"):
+        frames = read_sequence(frames, frame_rate=frame_rate)
+    sequence = vtkMultiBlockDataSet()
+    for k, frame in enumerate(frames):
+        sequence.SetBlock(k, frame)
+    if sequence.GetNumberOfBlocks() == 0:
+        raise ValueError("align: no frames")
+    return sequence
+
+
+def align(frames, ground_truth=None, template_frame=None, solver="exact", predict_radius=0.3,
+          shape_frames=8, frame_rate=25.0, progress=None):
+    """Aligns a captured sequence: body fit and landmarks, template choice, geodesic-patch
+    correspondences, template fit and, with a ground truth, the vertex errors.
+
+    frames          a folder, glob pattern or list file of frames (see read_sequence), a list of
+                    vtkPolyData, or a vtkMultiBlockDataSet with one frame per block
+    ground_truth    the same kinds of input: a sequence with one connectivity, same frame count
+    template_frame  a frame index to use as the template, or None to choose it automatically
+    solver          "exact" (sparse Cholesky, the default) or "lbfgs" (the paper's solver)
+    predict_radius  width (metres) of the landmark-driven start of each frame; 0 starts each frame
+                    from its neighbour's fit unchanged, as the paper does
+    progress        optional callable(stage_name, fraction) called as the stages advance
+
+    Returns an Alignment. Raises RuntimeError with the stage's message when a stage fails.
+    """
+    import clothtrack
+
+    if solver not in ("exact", "lbfgs"):
+        raise ValueError("solver must be 'exact' or 'lbfgs'")
+    sequence = _as_sequence(frames, frame_rate)
+    body = clothtrack.ctBodyFit()
+    body.SetInputData(sequence)
+    body.SetShapeFrames(min(shape_frames, sequence.GetNumberOfBlocks()))
+    correspondence = clothtrack.ctPatchCorrespondence()
+    correspondence.SetInputData(0, sequence)
+    correspondence.SetInputConnection(1, body.GetOutputPort(1))
+    if template_frame is not None:
+        if not 0 <= template_frame < sequence.GetNumberOfBlocks():
+            raise ValueError("template_frame %d is not a frame (0..%d)" % (template_frame,
+                                                                            sequence.GetNumberOfBlocks() - 1))
+        correspondence.SetTemplateFrame(template_frame)
+    fit = clothtrack.ctTemplateFit()
+    fit.SetInputData(0, sequence)
+    fit.SetInputConnection(1, correspondence.GetOutputPort(0))
+    fit.SetInputConnection(2, body.GetOutputPort(1))
+    fit.SetSolver(fit.LBFGS if solver == "lbfgs" else fit.EXACT)
+    fit.SetPredictRadius(predict_radius)
+    last = fit
+    if ground_truth is not None:
+        truth = _as_sequence(ground_truth, frame_rate)
+        if truth.GetNumberOfBlocks() != sequence.GetNumberOfBlocks():
+            raise ValueError("the ground truth has %d frames, the sequence %d"
+                             % (truth.GetNumberOfBlocks(), sequence.GetNumberOfBlocks()))
+        last = clothtrack.ctAlignmentError()
+        last.SetInputConnection(0, fit.GetOutputPort(0))
+        last.SetInputData(1, truth)
+
+    stages = {"body fit": body, "correspondence": correspondence, "template fit": fit}
+    if last is not fit:
+        stages["alignment error"] = last
+    catchers = {name: _ErrorCatcher(algorithm) for name, algorithm in stages.items()}
+    if progress is not None:
+        for name, algorithm in stages.items():
+            algorithm.AddObserver("ProgressEvent", lambda obj, _event, name=name: progress(name, obj.GetProgress()))
+    last.Update()
+    for name, catcher in catchers.items():
+        if catcher.message:
+            raise RuntimeError("%s: %s" % (name, catcher.message))
+
+    output = last.GetOutputDataObject(0)
+    aligned = [output.GetBlock(k) for k in range(output.GetNumberOfBlocks())]
+    errors = None
+    if last is not fit:
+        errors = np.stack([numpy_support.vtk_to_numpy(a.GetPointData().GetArray("Error")) for a in aligned])
+    return Alignment(aligned, correspondence.GetChosenFrame(), errors)

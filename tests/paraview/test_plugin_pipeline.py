@@ -1,0 +1,99 @@
+"""pvpython test: the whole pipeline built from the plugin's proxies (the example script's own
+functions) on a short synthetic capture: numbers, Play without recomputation, and a screenshot
+compared with a committed baseline image.
+
+usage: pvpython test_plugin_pipeline.py PLUGIN_PATH CLOTHTRACK_APP SCRATCH_DIR BASELINE_DIR
+Set CLOTHTRACK_UPDATE_BASELINES=1 to (re)write the baseline instead of comparing with it.
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+from paraview.simple import Hide, LoadPlugin, Render, SaveScreenshot  # noqa: F401
+
+plugin, app, scratch, baselines = sys.argv[1:5]
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "..", "paraview_plugin", "examples"))
+import clothtrack_pipeline  # noqa: E402
+
+LoadPlugin(plugin, remote=False)
+SIZE = (400, 400)
+# Mean per-pixel difference above which a render counts as different (vtkImageDifference's
+# thresholded error; identical renders give 0).
+IMAGE_TOLERANCE = 2.0
+
+
+def check(condition, message):
+    if not condition:
+        print("FAIL: " + message)
+        sys.exit(1)
+
+
+def image_difference(a, b):
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.vtkImagingCore import vtkImageDifference
+
+    readers = []
+    for path in (a, b):
+        reader = vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        readers.append(reader)
+    difference = vtkImageDifference()
+    difference.SetInputConnection(readers[0].GetOutputPort())
+    difference.SetImageConnection(readers[1].GetOutputPort())
+    difference.Update()
+    return difference.GetThresholdedError()
+
+
+shutil.rmtree(scratch, ignore_errors=True)
+os.makedirs(scratch)
+data = os.path.join(scratch, "synth")
+subprocess.run([app, "synth", "--preset", "skirt-turn", "--frames", "4", "--seed", "3", "-o", data],
+               check=True, stdout=subprocess.DEVNULL)
+
+pipeline = clothtrack_pipeline.build_pipeline(os.path.join(data, "frames"), os.path.join(data, "ground_truth"),
+                                              shape_frames=2)
+# Creating Play Sequence runs the pipeline (its time steps are the fitted frames); playing must
+# not run it again.
+aligned = pipeline["fit"].GetClientSideObject().GetOutputDataObject(0)
+check(aligned.GetNumberOfBlocks() == 4, "aligned frames %d" % aligned.GetNumberOfBlocks())
+fitted_at = aligned.GetMTime()
+view = clothtrack_pipeline.show_aligned(pipeline, SIZE)
+
+frames = pipeline["frames"]
+frames.UpdatePipelineInformation()
+times = list(pipeline["play"].TimestepValues)
+check(times == list(frames.TimestepValues), "Play times %s, frames %s" % (times, list(frames.TimestepValues)))
+paths = clothtrack_pipeline.save_frames(pipeline, view, scratch, SIZE)
+check(len(paths) == 3 and all(os.path.getsize(p) > 1000 for p in paths), "screenshots %s" % paths)
+check(pipeline["fit"].GetClientSideObject().GetOutputDataObject(0).GetMTime() == fitted_at,
+      "the template fit ran again while playing")
+
+errors = pipeline["error"].GetClientSideObject().GetOutputDataObject(1)
+check(errors.GetNumberOfRows() == 4, "error rows %d" % errors.GetNumberOfRows())
+for k in range(4):
+    mean = errors.GetValueByName(k, "Mean").ToDouble()
+    within = errors.GetValueByName(k, "Within10cm").ToDouble()
+    print("frame %d: mean error %.4f m, within 10 cm %.3f" % (k, mean, within))
+    check(mean < 0.04 and within > 0.95, "frame %d: mean %g, within 10 cm %g" % (k, mean, within))
+
+shot = paths[-1]
+baseline = os.path.join(baselines, "plugin_pipeline_aligned.png")
+if os.environ.get("CLOTHTRACK_UPDATE_BASELINES") == "1":
+    shutil.copyfile(shot, baseline)
+    print("wrote baseline", baseline)
+check(os.path.exists(baseline), "no baseline %s (run with CLOTHTRACK_UPDATE_BASELINES=1)" % baseline)
+difference = image_difference(shot, baseline)
+print("image difference to the baseline: %.3f (tolerance %.1f)" % (difference, IMAGE_TOLERANCE))
+check(difference <= IMAGE_TOLERANCE, "the render differs from %s by %.3f; see %s" % (baseline, difference, shot))
+
+# The comparison does see a broken render: the same view without the template.
+Hide(pipeline["play"], view)
+empty = os.path.join(scratch, "empty.png")
+SaveScreenshot(empty, view, ImageResolution=list(SIZE))
+broken = image_difference(empty, baseline)
+print("image difference of an empty view: %.3f" % broken)
+check(broken > IMAGE_TOLERANCE, "an empty view passes as the baseline (%.3f)" % broken)
+print("plugin pipeline test passed")
