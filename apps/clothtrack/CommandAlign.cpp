@@ -17,6 +17,7 @@
 #include <clothtrack/Error.h>
 #include <clothtrack/FrameList.h>
 #include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/MarkerError.h>
 #include <clothtrack/MotionPrediction.h>
 #include <clothtrack/Parallel.h>
 #include <clothtrack/SurfaceLocator.h>
@@ -37,7 +38,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <optional>
 
 namespace fs = std::filesystem;
 
@@ -100,6 +103,21 @@ void addArray(vtkPolyData* mesh, const char* name, const Eigen::Ref<const Eigen:
   mesh->GetPointData()->AddArray(array);
 }
 
+/// Whether the JSON file at `path` holds `key`.
+bool sameKey(const fs::path& path, const nlohmann::json& key)
+{
+  std::ifstream in(path);
+  if (!in) return false;
+  try
+  {
+    return nlohmann::json::parse(in) == key;
+  }
+  catch (const nlohmann::json::exception&)
+  {
+    return false;
+  }
+}
+
 /// Distance from each point to the surface behind `locator`.
 Eigen::VectorXd distances(const Points& points, const SurfaceLocator& locator)
 {
@@ -112,7 +130,8 @@ Eigen::VectorXd distances(const Points& points, const SurfaceLocator& locator)
 
 int runAlign(const Args& args)
 {
-  std::string input, output, truthInput, frameSpec, modelPath, solver = "exact";
+  std::string input, output, truthInput, frameSpec, modelPath, markersPath, workDir,
+      solver = "exact";
   SequenceOptions seq;
   int threads = 0, forcedTemplate = -1;
   double truthDistance = 0.03;
@@ -145,7 +164,16 @@ int runAlign(const Args& args)
       "each frame's fit starts from its neighbour's moved by the landmarks' locally rigid motion, "
       "weighted over this radius (m; 0: from the neighbour's fit as it is)")(
       "truth-distance", po::value(&truthDistance)->default_value(truthDistance),
-      "template vertices further than this from the ground truth have no error (m)");
+      "template vertices further than this from the ground truth have no error (m)")(
+      "markers", po::value(&markersPath),
+      "marker trajectories (CSV frame,time,marker,x,y,z, frames numbered as the input's): adds "
+      "the error at each marker's nearest template vertex")(
+      "work", po::value(&workDir),
+      "folder for intermediate results (default OUT/work); runs on the same input with other fit "
+      "options may share it and reuse its landmarks and correspondences")(
+      "no-correspondence", po::bool_switch(),
+      "ablation: fit without the correspondence term Ec (with --predict-radius 0: nearest "
+      "points alone, a sequential non-rigid ICP)");
   addSequenceOptions(options, seq);
   po::positional_options_description positional;
   positional.add("input", 1);
@@ -164,6 +192,9 @@ int runAlign(const Args& args)
   if (!(predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
   setThreadCount(threads);
   const bool skipBad = values["skip-bad-frames"].as<bool>();
+  fit.useCorrespondence = !values["no-correspondence"].as<bool>();
+  // Landmarks serve the correspondences and the start prediction; without both, no body fit.
+  const bool needLandmarks = fit.useCorrespondence || predictRadius > 0;
   const auto start = Clock::now();
   nlohmann::json stageSeconds;
 
@@ -229,17 +260,33 @@ int runAlign(const Args& args)
   }
   stageSeconds["read"] = since(t0);
 
+  // Markers are read now, so that a bad file stops the run before the long stages.
+  std::optional<MarkerTrajectories> markers;
+  if (!markersPath.empty())
+  {
+    markers = readMarkersCsv(markersPath);
+    if (markers->numFrames() < end)
+      throw UsageError{markersPath + ": markers for " + std::to_string(markers->numFrames()) +
+                       " frames, the input has " + std::to_string(end)};
+    MarkerTrajectories selected{markers->names, {}};
+    for (int k : frameNumber) selected.positions.push_back(markers->positions[k]);
+    markers = std::move(selected);
+  }
+
   const fs::path out(output);
-  const fs::path work = out / "work";
+  const fs::path work = workDir.empty() ? out / "work" : fs::path(workDir);
   fs::create_directories(work);
+  fs::create_directories(out);
 
   // Stage 1: body under the clothing, landmarks on every frame.
   t0 = Clock::now();
   const nlohmann::json landmarkKey = {
       {"files", files}, {"model", modelPath}, {"up", seq.up}, {"unit", seq.unit}};
-  std::vector<FrameLandmarks> landmarks;
-  if (auto cached = readLandmarks((work / "landmarks.json").string(), landmarkKey);
-      cached && static_cast<int>(cached->size()) == n)
+  std::vector<FrameLandmarks> landmarks(n);
+  if (!needLandmarks)
+    std::fprintf(stderr, "body fit: skipped (no correspondence term, no start prediction)\n");
+  else if (auto cached = readLandmarks((work / "landmarks.json").string(), landmarkKey);
+           cached && static_cast<int>(cached->size()) == n)
   {
     landmarks = std::move(*cached);
     std::fprintf(stderr, "body fit: landmarks of %d frames reused from %s\n", n,
@@ -300,41 +347,36 @@ int runAlign(const Args& args)
                forcedTemplate >= 0 ? ", set by --template" : "");
   stageSeconds["select_template"] = since(t0);
 
-  // A run key: results on disk made with other inputs or options are not reused.
-  const nlohmann::json runKey = {
+  // Correspondences depend on the landmarks, the template and the patch options; the aligned
+  // frames on those and on the fit options. Results made with other ones are not reused.
+  const nlohmann::json correspondenceKey = {
       {"landmarks", landmarkKey},
       {"template", j},
-      {"ground_truth", truthFiles},
-      {"solver", solver},
-      {"patches", {patches.epsilon, patches.minRadius, patches.maxRadius}},
-      {"truth_distance", truthDistance},
-      {"predict_radius", predictRadius}};
-  const fs::path runKeyPath = work / "run.json";
+      {"patches", {patches.epsilon, patches.minRadius, patches.maxRadius}}};
+  const fs::path correspondenceDir = work / "correspondence";
+  if (!sameKey(correspondenceDir / "key.json", correspondenceKey))
   {
-    std::ifstream in(runKeyPath);
-    bool same = false;
-    if (in)
-    {
-      try
-      {
-        same = nlohmann::json::parse(in) == runKey;
-      }
-      catch (const nlohmann::json::exception&)
-      {
-      }
-    }
-    if (!same)
-    {
-      if (fs::exists(out / "aligned"))
-        std::fprintf(stderr,
-                     "new run: earlier results in %s were made with other inputs or "
-                     "options and are replaced\n",
-                     output.c_str());
-      fs::remove_all(out / "aligned");
-      fs::remove_all(work / "correspondence");
-      fs::create_directories(work / "correspondence");
-      writeTextAtomically(runKeyPath.string(), runKey.dump(2) + "\n");
-    }
+    fs::remove_all(correspondenceDir);
+    fs::create_directories(correspondenceDir);
+    writeTextAtomically((correspondenceDir / "key.json").string(),
+                        correspondenceKey.dump(2) + "\n");
+  }
+  const nlohmann::json runKey = {{"correspondence", correspondenceKey},
+                                 {"ground_truth", truthFiles},
+                                 {"solver", solver},
+                                 {"truth_distance", truthDistance},
+                                 {"predict_radius", predictRadius},
+                                 {"use_correspondence", fit.useCorrespondence}};
+  const fs::path runKeyPath = out / "run.json";
+  if (!sameKey(runKeyPath, runKey))
+  {
+    if (fs::exists(out / "aligned"))
+      std::fprintf(stderr,
+                   "new run: earlier results in %s were made with other inputs or "
+                   "options and are replaced\n",
+                   output.c_str());
+    fs::remove_all(out / "aligned");
+    writeTextAtomically(runKeyPath.string(), runKey.dump(2) + "\n");
   }
 
   std::optional<TruthAnchors> anchors;
@@ -382,10 +424,10 @@ int runAlign(const Args& args)
         auto c0 = Clock::now();
         char targetName[32];
         std::snprintf(targetName, sizeof(targetName), "frame_%04d.bin", frameNumber[k]);
-        const std::string targetPath = (work / "correspondence" / targetName).string();
-        std::optional<VertexTargets> targets =
-            readTargets(targetPath, files[k], templ.numVertices());
-        if (!targets)
+        const std::string targetPath = (correspondenceDir / targetName).string();
+        std::optional<VertexTargets> targets;
+        if (fit.useCorrespondence) targets = readTargets(targetPath, files[k], templ.numVertices());
+        if (!targets && fit.useCorrespondence)
         {
           if (!templatePatches)
             templatePatches = std::make_unique<TemplatePatches>(templ, landmarks[j], patches);
@@ -402,7 +444,7 @@ int runAlign(const Args& args)
                         after);
           start = predictMotion(start, before, after, predictRadius);
         }
-        const FrameFit result = fitter.fit(start, frames[k], &*targets);
+        const FrameFit result = fitter.fit(start, frames[k], targets ? &*targets : nullptr);
         fitSeconds += result.seconds;
         aligned[k] = result.positions;
         for (int i = 0; i < templ.numVertices(); ++i) used[i] = result.used[i];
@@ -492,6 +534,32 @@ int runAlign(const Args& args)
     metrics["cumulative_error"] = {{"threshold_m", summary.thresholds},
                                    {"fraction", summary.fractions}};
   }
+  if (markers)
+  {
+    const std::vector<int> vertices = nearestTemplateVertices(templ.V, markers->positions[j]);
+    const Eigen::MatrixXd markerError = markerErrors(aligned, *markers, vertices);
+    const SequenceErrors summary = markerSequenceErrors(markerError, j);
+    nlohmann::json perMarker = nlohmann::json::object();
+    for (size_t i = 0; i < markers->names.size(); ++i)
+    {
+      std::vector<double> column;
+      for (int k = 0; k < n; ++k)
+        if (k != j && std::isfinite(markerError(k, i))) column.push_back(markerError(k, i));
+      if (!column.empty()) perMarker[markers->names[i]] = errorStatistics(column).mean;
+    }
+    std::vector<double> perFrame;
+    for (const ErrorStatistics& s : summary.perFrame) perFrame.push_back(s.mean);
+    metrics["markers"] = fs::absolute(markersPath).string();
+    metrics["marker_mean_error_m"] = summary.pooled.mean;
+    metrics["marker_median_error_m"] = summary.pooled.median;
+    metrics["marker_max_error_m"] = summary.pooled.max;
+    metrics["marker_within_5cm"] = summary.pooled.within5cm;
+    metrics["marker_within_10cm"] = summary.pooled.within10cm;
+    metrics["per_marker_mean_error_m"] = perMarker;
+    metrics["per_frame_marker_error_m"] = perFrame;
+    metrics["marker_cumulative_error"] = {{"threshold_m", summary.thresholds},
+                                          {"fraction", summary.fractions}};
+  }
   // Without ground truth too: how well the result covers each frame, and how smoothly it moves.
   std::vector<double> coverage(n), jitter;
   parallelFor(
@@ -535,6 +603,7 @@ int runAlign(const Args& args)
     std::printf("; mean vertex error %.2f cm, %.2f %% within 10 cm",
                 100 * metrics["mean_vertex_error_m"].get<double>(),
                 100 * metrics["within_10cm"].get<double>());
+  if (markers) std::printf("; markers %.2f cm", 100 * metrics["marker_mean_error_m"].get<double>());
   std::printf("\nwrote %s and %s\n", alignedPvd.c_str(), (out / "metrics.json").c_str());
   std::fflush(stdout);
   if (!values["no-report"].as<bool>())

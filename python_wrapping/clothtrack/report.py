@@ -27,6 +27,9 @@ def _plots(metrics, images):
         ax.plot(frames, [100 * e for e in metrics["per_frame_mean_error_m"]], label="mean")
         ax.plot(frames, [100 * e for e in metrics["per_frame_p90_error_m"]], label="90th percentile",
                 alpha=0.7)
+        if "per_frame_marker_error_m" in metrics:
+            ax.plot(frames, [100 * e if e is not None else float("nan")
+                             for e in metrics["per_frame_marker_error_m"]], label="markers (mean)", alpha=0.7)
         ax.set_ylabel("vertex error (cm)")
     else:
         ax.plot(frames, [100 * e for e in metrics["per_frame_surface_distance_m"]],
@@ -42,12 +45,17 @@ def _plots(metrics, images):
     fig.savefig(images / "per_frame_error.png")
     plt.close(fig)
     written.append("per_frame_error.png")
-    if has_truth:
-        curve = metrics["cumulative_error"]
+    curves = [(key, label) for key, label in (("cumulative_error", "all vertices"),
+                                              ("marker_cumulative_error", "markers (nearest vertex)"))
+              if key in metrics]
+    if curves:
         fig, ax = plt.subplots(figsize=(5, 3.2), dpi=110)
-        ax.plot([100 * t for t in curve["threshold_m"]], [100 * f for f in curve["fraction"]])
+        for key, label in curves:
+            curve = metrics[key]
+            ax.plot([100 * t for t in curve["threshold_m"]], [100 * f for f in curve["fraction"]], label=label)
         ax.set_xlabel("error threshold (cm)")
-        ax.set_ylabel("vertices within (%)")
+        ax.set_ylabel("within the threshold (%)")
+        ax.legend(fontsize=8)
         ax.set_ylim(0, 100)
         ax.grid(alpha=0.3)
         fig.tight_layout()
@@ -173,6 +181,12 @@ def write_report(out):
                  ("worst frame", "%d (mean %.2f cm)" % (metrics["worst_frame"],
                                                        100 * metrics["worst_frame_mean_error_m"])),
                  ("drift", "%.3f mm per frame from the template" % (1000 * metrics["drift_m_per_frame"]))]
+    if "marker_mean_error_m" in metrics:
+        worst = max(metrics["per_marker_mean_error_m"].items(), key=lambda item: item[1], default=("-", 0.0))
+        rows += [("marker error", "%.2f cm mean, %.2f %% within 5 cm, %.2f %% within 10 cm"
+                  % (100 * metrics["marker_mean_error_m"], 100 * metrics["marker_within_5cm"],
+                     100 * metrics["marker_within_10cm"])),
+                 ("worst marker", "%s (mean %.2f cm)" % (worst[0], 100 * worst[1]))]
     rows += [("template to frame surface", "%.2f cm (mean)" % (100 * metrics["mean_surface_distance_m"])),
              ("frame to template surface", "%.2f cm (mean)" % (100 * metrics["mean_coverage_distance_m"])),
              ("jitter", "%.2f mm (mean vertex acceleration per frame)" % (1000 * metrics["mean_jitter_m"]))]

@@ -12,7 +12,8 @@ function(read_metric out)
 endfunction()
 
 expect_run(0 "wrote 6 frames" synth --preset skirt-turn --frames 6 --seed 3 -o ${WORK}/synth)
-expect_run(0 "aligned 6 frames" align ${WORK}/synth/frames --ground-truth ${WORK}/synth/ground_truth -o ${WORK}/out)
+expect_run(0 "aligned 6 frames" align ${WORK}/synth/frames --ground-truth ${WORK}/synth/ground_truth
+  --markers ${WORK}/synth/markers.csv -o ${WORK}/out)
 foreach (f aligned.pvd aligned/aligned_0000.vtp aligned/aligned_0005.vtp metrics.json work/landmarks.json
          report.html images/per_frame_error.png images/cumulative_error.png)
   if (NOT EXISTS ${WORK}/out/${f})
@@ -25,6 +26,12 @@ read_metric(mean mean_vertex_error_m)
 read_metric(within10 within_10cm)
 read_metric(rss peak_rss_mb)
 read_metric(fit_seconds stage_seconds fit)
+read_metric(marker_mean marker_mean_error_m)
+read_metric(knee per_marker_mean_error_m left_knee)
+# Markers are on the body, under the skirt at the knees: a few centimetres (measured 0.8 cm mean).
+if (marker_mean GREATER 0.04 OR NOT marker_mean GREATER 0 OR NOT knee GREATER 0)
+  message(FATAL_ERROR "metrics.json: marker error ${marker_mean} m, left knee ${knee} m")
+endif ()
 file(READ ${WORK}/out/metrics.json metrics)
 string(JSON per_frame_count LENGTH "${metrics}" per_frame_mean_error_m)
 message(STATUS "template ${template}, mean error ${mean} m, within 10 cm ${within10}, peak ${rss} MB")
@@ -47,6 +54,23 @@ endif ()
 if (mean_again GREATER 0.04 OR NOT EXISTS ${WORK}/out/aligned/aligned_0005.vtp)
   message(FATAL_ERROR "resumed run: mean error ${mean_again} m")
 endif ()
+# Another fit option with the same work folder: landmarks and correspondences are reused, the fit
+# is not.
+expect_run(0 "reused" align ${WORK}/synth/frames --ground-truth ${WORK}/synth/ground_truth -o ${WORK}/lbfgs
+  --work ${WORK}/out/work --solver lbfgs --no-report)
+read_metric(lbfgs_mean mean_vertex_error_m)
+file(READ ${WORK}/lbfgs/metrics.json lbfgs_metrics)
+string(JSON lbfgs_correspond GET "${lbfgs_metrics}" stage_seconds correspond)
+string(JSON lbfgs_resumed GET "${lbfgs_metrics}" resumed_frames)
+if (lbfgs_correspond GREATER 0.5 OR NOT lbfgs_resumed EQUAL 0 OR lbfgs_mean GREATER 0.05)
+  message(FATAL_ERROR "shared work folder: correspondence ${lbfgs_correspond} s, resumed ${lbfgs_resumed}, error ${lbfgs_mean}")
+endif ()
+# The ablation without Ec and prediction needs no body fit.
+expect_run(0 "body fit: skipped" align ${WORK}/synth/frames --frames 0:3 -o ${WORK}/icp --no-correspondence
+  --predict-radius 0 --no-report)
+file(WRITE ${WORK}/bad/markers.csv "frame,time,marker,x,y,z\n0,0,knee,1,2\n")
+expect_run(1 "markers.csv:2: expected frame,time,marker,x,y,z" align ${WORK}/synth/frames -o ${WORK}/x
+  --markers ${WORK}/bad/markers.csv)
 # Other options: earlier results are not reused.
 expect_run(0 "replaced" align ${WORK}/synth/frames --frames 1:4 -o ${WORK}/out --no-report)
 read_metric(frames frames)

@@ -3,6 +3,7 @@ written by `clothtrack synth` (with its ground truth), and its errors for bad in
 
 import os
 import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -60,6 +61,23 @@ class AlignTest(unittest.TestCase):
         self.assertIsNone(result.errors)
         self.assertNotIn("mean_vertex_error_m", result.metrics)
         self.assertLess(result.metrics["mean_surface_distance_m"], 0.02)
+
+    def test_the_examples_run(self):
+        examples = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python_wrapping", "examples")
+        frames = os.path.join(self.data, "frames")
+        npz = os.path.join(self.folder.name, "aligned.npz")
+        out = subprocess.run([sys.executable, os.path.join(examples, "align_sequence.py"), frames, "--ground-truth",
+                              os.path.join(self.data, "ground_truth"), "--template", "0", "-o", npz],
+                             check=True, capture_output=True, text=True).stdout
+        self.assertIn("template frame 0, %d frames" % FRAMES, out)
+        saved = np.load(npz)
+        self.assertEqual(saved["positions"].shape[0], FRAMES)
+        self.assertLess(np.nanmean(saved["errors"][1:]), 0.03)
+        vtp = os.path.join(self.folder.name, "chain.vtp")
+        out = subprocess.run([sys.executable, os.path.join(examples, "filter_chain.py"), frames, vtp],
+                             check=True, capture_output=True, text=True).stdout
+        self.assertIn("wrote " + vtp, out)
+        self.assertGreater(os.path.getsize(vtp), 10000)
 
     def test_bad_input_raises(self):
         with self.assertRaisesRegex(ValueError, "no frames"):
