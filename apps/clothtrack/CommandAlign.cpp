@@ -34,13 +34,16 @@
 
 #include <sys/resource.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <thread>
 
 namespace fs = std::filesystem;
 
@@ -382,32 +385,38 @@ int runAlign(const Args& args)
   std::optional<TruthAnchors> anchors;
   if (!truth.empty()) anchors = anchorToTruth(templ.V, truth[j], truthDistance);
 
-  // Stages 2b and 3: correspondence and fit, frame by frame in the paper's order.
-  std::unique_ptr<TemplatePatches> templatePatches; // made when a frame first needs it
-  const TemplateFitter fitter(templ, fit);
+  // Stages 2b and 3: correspondence and fit, frame by frame in the paper's order: the template
+  // frame j, then j-1 down to 0 and j+1 up to n-1. The two chains are independent, so they run
+  // side by side, each with its own fitter (a fitter keeps per-chain factorisations).
+  const TemplateFitter backwardFitter(templ, fit), forwardFitter(templ, fit);
   const std::string alignedPvd = (out / "aligned.pvd").string();
   std::vector<Points> aligned(n);
   std::vector<Eigen::VectorXd> errors(n);
   std::vector<double> frameSeconds(n, 0.0);
   std::vector<double> toSurface(n, -1.0); // mean distance to the frame; -1: not known yet
-  double correspondSeconds = 0, fitSeconds = 0;
-  int resumed = 0;
-  std::vector<int> order = {j};
-  for (int k = j - 1; k >= 0; --k) order.push_back(k);
-  for (int k = j + 1; k < n; ++k) order.push_back(k);
-  Progress progress("align", n);
-  for (size_t step = 0; step < order.size(); ++step)
+  std::atomic<int> resumed{0}, done{0};
+  std::mutex progressMutex;
+  std::unique_ptr<Progress> alignProgress; // started with the chains
+  auto alignedPath = [&](int k)
   {
-    const int k = order[step];
     char name[32];
     std::snprintf(name, sizeof(name), "aligned_%04d.vtp", frameNumber[k]);
-    const fs::path alignedPath = out / "aligned" / name;
-    if (fs::exists(alignedPath))
+    return out / "aligned" / name;
+  };
+  auto targetPath = [&](int k)
+  {
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%04d.bin", frameNumber[k]);
+    return (correspondenceDir / name).string();
+  };
+  auto alignFrame = [&](int k, const TemplateFitter& fitter)
+  {
+    if (fs::exists(alignedPath(k)))
     {
-      const TriangleMesh done = readMeshFile(alignedPath.string());
-      if (done.numVertices() == templ.numVertices() && done.V.allFinite())
+      const TriangleMesh finished = readMeshFile(alignedPath(k).string());
+      if (finished.numVertices() == templ.numVertices() && finished.V.allFinite())
       {
-        aligned[k] = done.V;
+        aligned[k] = finished.V;
         ++resumed;
       }
     }
@@ -421,20 +430,14 @@ int runAlign(const Args& args)
         aligned[k] = templ.V;
       else
       {
-        auto c0 = Clock::now();
-        char targetName[32];
-        std::snprintf(targetName, sizeof(targetName), "frame_%04d.bin", frameNumber[k]);
-        const std::string targetPath = (correspondenceDir / targetName).string();
         std::optional<VertexTargets> targets;
-        if (fit.useCorrespondence) targets = readTargets(targetPath, files[k], templ.numVertices());
-        if (!targets && fit.useCorrespondence)
+        if (fit.useCorrespondence)
         {
-          if (!templatePatches)
-            templatePatches = std::make_unique<TemplatePatches>(templ, landmarks[j], patches);
-          targets = vertexTargets(templatePatches->correspond(frames[k], landmarks[k]));
-          writeTargets(targetPath, files[k], *targets);
+          targets = readTargets(targetPath(k), files[k], templ.numVertices());
+          if (!targets)
+            throw Error("the correspondences of " + files[k] + " vanished from " +
+                        correspondenceDir.string() + " during the run");
         }
-        correspondSeconds += since(c0);
         const int previous = k < j ? k + 1 : k - 1;
         Points start = aligned[previous];
         if (predictRadius > 0)
@@ -445,7 +448,6 @@ int runAlign(const Args& args)
           start = predictMotion(start, before, after, predictRadius);
         }
         const FrameFit result = fitter.fit(start, frames[k], targets ? &*targets : nullptr);
-        fitSeconds += result.seconds;
         aligned[k] = result.positions;
         for (int i = 0; i < templ.numVertices(); ++i) used[i] = result.used[i];
         surfaceDistance = result.surfaceDistance;
@@ -469,9 +471,77 @@ int runAlign(const Args& args)
     }
     else if (anchors)
       errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
-    progress.step(static_cast<int>(step + 1));
+    const std::lock_guard<std::mutex> lock(progressMutex);
+    alignProgress->step(++done);
+  };
+  // Stage 2b first, for every frame still to fit, all cores (frames are independent): the chains
+  // then only read them.
+  t0 = Clock::now();
+  if (fit.useCorrespondence)
+  {
+    std::vector<int> missing;
+    for (int k = 0; k < n; ++k)
+      if (k != j && !fs::exists(alignedPath(k)) &&
+          !readTargets(targetPath(k), files[k], templ.numVertices()))
+        missing.push_back(k);
+    if (!missing.empty())
+    {
+      const TemplatePatches templatePatches(templ, landmarks[j], patches);
+      Progress correspondProgress("correspond", static_cast<int>(missing.size()));
+      std::atomic<int> corresponded{0};
+      parallelFor(
+          0, static_cast<int>(missing.size()),
+          [&](int m)
+          {
+            const int k = missing[m];
+            writeTargets(targetPath(k), files[k],
+                         vertexTargets(templatePatches.correspond(frames[k], landmarks[k])));
+            const std::lock_guard<std::mutex> lock(progressMutex);
+            correspondProgress.step(++corresponded);
+          },
+          1);
+      correspondProgress.finish();
+    }
   }
-  progress.finish();
+  stageSeconds["correspond"] = since(t0);
+
+  t0 = Clock::now();
+  alignProgress = std::make_unique<Progress>("align", n);
+  alignFrame(j, forwardFitter);
+  {
+    std::exception_ptr backwardError;
+    auto backward = [&]()
+    {
+      try
+      {
+        for (int k = j - 1; k >= 0; --k) alignFrame(k, backwardFitter);
+      }
+      catch (...)
+      {
+        backwardError = std::current_exception();
+      }
+    };
+    std::thread backwardThread;
+    if (threadCount() > 1)
+      backwardThread = std::thread(backward);
+    else
+      backward();
+    for (int k = j + 1; k < n; ++k)
+    {
+      try
+      {
+        alignFrame(k, forwardFitter);
+      }
+      catch (...)
+      {
+        if (backwardThread.joinable()) backwardThread.join();
+        throw;
+      }
+    }
+    if (backwardThread.joinable()) backwardThread.join();
+    if (backwardError) std::rethrow_exception(backwardError);
+  }
+  alignProgress->finish();
   std::vector<std::pair<double, std::string>> entries;
   for (int k = 0; k < n; ++k)
   {
@@ -480,8 +550,7 @@ int runAlign(const Args& args)
     entries.push_back({frameNumber[k] / seq.fps, name});
   }
   writeCollection(alignedPvd, entries);
-  stageSeconds["correspond"] = correspondSeconds;
-  stageSeconds["fit"] = fitSeconds;
+  stageSeconds["fit"] = since(t0);
 
   // Evaluation.
   t0 = Clock::now();
@@ -495,7 +564,7 @@ int runAlign(const Args& args)
   metrics["files"] = files;
   metrics["unit"] = seq.unit;
   metrics["up"] = seq.up;
-  metrics["resumed_frames"] = resumed;
+  metrics["resumed_frames"] = resumed.load();
   metrics["threads"] = threadCount();
   metrics["solver"] = solver;
   metrics["predict_radius_m"] = predictRadius;
@@ -598,7 +667,8 @@ int runAlign(const Args& args)
   writeTextAtomically((out / "metrics.json").string(), metrics.dump(2) + "\n");
 
   std::printf("aligned %d frames (template frame %d) in %.1f s (%.2f s/frame%s)", n, j, total,
-              total / n, resumed ? (", " + std::to_string(resumed) + " resumed").c_str() : "");
+              total / n,
+              resumed ? (", " + std::to_string(resumed.load()) + " resumed").c_str() : "");
   if (anchors)
     std::printf("; mean vertex error %.2f cm, %.2f %% within 10 cm",
                 100 * metrics["mean_vertex_error_m"].get<double>(),
