@@ -4,6 +4,7 @@
 //   OUT/work/                    intermediate results: a run that was stopped resumes from them
 #include "AlignCache.h"
 #include "Commands.h"
+#include "ErrorMetrics.h"
 #include "Options.h"
 #include "Progress.h"
 #include "Report.h"
@@ -131,7 +132,18 @@ Eigen::VectorXd distances(const Points& points, const SurfaceLocator& locator)
 }
 } // namespace
 
-int runAlign(const Args& args)
+namespace
+{
+/// What a run does: everything ('align'), stages 1 and 2 into the work folder ('correspond'), or
+/// stage 3 and the evaluation from a work folder that 'correspond' filled ('fit').
+enum class AlignMode
+{
+  Full,
+  CorrespondOnly,
+  FitOnly
+};
+
+int alignCommand(const Args& args, AlignMode mode)
 {
   std::string input, output, truthInput, frameSpec, modelPath, markersPath, workDir,
       solver = "exact";
@@ -181,9 +193,15 @@ int runAlign(const Args& args)
   po::positional_options_description positional;
   positional.add("input", 1);
   po::variables_map values;
-  if (!parseOptions(args, "clothtrack align INPUT -o OUT [--ground-truth GT] [options]", options,
-                    positional, values))
-    return 0;
+  const char* usage =
+      mode == AlignMode::CorrespondOnly
+          ? "clothtrack correspond INPUT -o OUT [--work DIR] [options] (stages 1 and 2 into the "
+            "work folder, for 'clothtrack fit')"
+      : mode == AlignMode::FitOnly
+          ? "clothtrack fit INPUT -o OUT [--work DIR] [options] (stage 3 from the work folder "
+            "that 'clothtrack correspond' filled)"
+          : "clothtrack align INPUT -o OUT [--ground-truth GT] [options]";
+  if (!parseOptions(args, usage, options, positional, values)) return 0;
   const FrameConventions conventions = toConventions(seq);
   if (threads < 0) throw UsageError{"--threads must be 0 or more"};
   if (solver != "exact" && solver != "lbfgs")
@@ -265,16 +283,7 @@ int runAlign(const Args& args)
 
   // Markers are read now, so that a bad file stops the run before the long stages.
   std::optional<MarkerTrajectories> markers;
-  if (!markersPath.empty())
-  {
-    markers = readMarkersCsv(markersPath);
-    if (markers->numFrames() < end)
-      throw UsageError{markersPath + ": markers for " + std::to_string(markers->numFrames()) +
-                       " frames, the input has " + std::to_string(end)};
-    MarkerTrajectories selected{markers->names, {}};
-    for (int k : frameNumber) selected.positions.push_back(markers->positions[k]);
-    markers = std::move(selected);
-  }
+  if (!markersPath.empty()) markers = selectedMarkers(markersPath, frameNumber);
 
   const fs::path out(output);
   const fs::path work = workDir.empty() ? out / "work" : fs::path(workDir);
@@ -484,6 +493,11 @@ int runAlign(const Args& args)
       if (k != j && !fs::exists(alignedPath(k)) &&
           !readTargets(targetPath(k), files[k], templ.numVertices()))
         missing.push_back(k);
+    if (!missing.empty() && mode == AlignMode::FitOnly)
+      throw UsageError{correspondenceDir.string() + ": no correspondences for " +
+                       std::to_string(missing.size()) +
+                       " frames with this template and these options (run 'clothtrack "
+                       "correspond' with the same input, options and work folder first)"};
     if (!missing.empty())
     {
       const TemplatePatches templatePatches(templ, landmarks[j], patches);
@@ -504,6 +518,13 @@ int runAlign(const Args& args)
     }
   }
   stageSeconds["correspond"] = since(t0);
+  if (mode == AlignMode::CorrespondOnly)
+  {
+    std::printf("landmarks and correspondences of %d frames (template frame %d) in %s; "
+                "'clothtrack fit' with the same input and work folder fits the template\n",
+                n, j, work.c_str());
+    return 0;
+  }
 
   t0 = Clock::now();
   alignProgress = std::make_unique<Progress>("align", n);
@@ -571,64 +592,8 @@ int runAlign(const Args& args)
   std::vector<double> landmarkCounts;
   for (const auto& l : landmarks) landmarkCounts.push_back(static_cast<double>(l.size()));
   metrics["landmarks_per_frame"] = landmarkCounts;
-  if (anchors)
-  {
-    const SequenceErrors summary = sequenceErrors(errors, j);
-    std::vector<double> perFrameMean, perFrameMedian, perFrameP90, perFrameMax, perFrameWithin10;
-    for (const ErrorStatistics& s : summary.perFrame)
-    {
-      perFrameMean.push_back(s.mean);
-      perFrameMedian.push_back(s.median);
-      perFrameP90.push_back(s.p90);
-      perFrameMax.push_back(s.max);
-      perFrameWithin10.push_back(s.within10cm);
-    }
-    const ErrorStatistics& all = summary.pooled;
-    metrics["ground_truth"] = truthInput;
-    metrics["vertices_with_ground_truth"] = anchors->count();
-    metrics["mean_vertex_error_m"] = all.mean;
-    metrics["median_vertex_error_m"] = all.median;
-    metrics["p90_vertex_error_m"] = all.p90;
-    metrics["max_vertex_error_m"] = all.max;
-    metrics["within_5cm"] = all.within5cm;
-    metrics["within_10cm"] = all.within10cm;
-    metrics["worst_frame"] = summary.worstFrame;
-    metrics["worst_frame_mean_error_m"] = perFrameMean[summary.worstFrame];
-    metrics["drift_m_per_frame"] = summary.driftPerFrame;
-    metrics["per_frame_mean_error_m"] = perFrameMean;
-    metrics["per_frame_median_error_m"] = perFrameMedian;
-    metrics["per_frame_p90_error_m"] = perFrameP90;
-    metrics["per_frame_max_error_m"] = perFrameMax;
-    metrics["per_frame_within_10cm"] = perFrameWithin10;
-    metrics["cumulative_error"] = {{"threshold_m", summary.thresholds},
-                                   {"fraction", summary.fractions}};
-  }
-  if (markers)
-  {
-    const std::vector<int> vertices = nearestTemplateVertices(templ.V, markers->positions[j]);
-    const Eigen::MatrixXd markerError = markerErrors(aligned, *markers, vertices);
-    const SequenceErrors summary = markerSequenceErrors(markerError, j);
-    nlohmann::json perMarker = nlohmann::json::object();
-    for (size_t i = 0; i < markers->names.size(); ++i)
-    {
-      std::vector<double> column;
-      for (int k = 0; k < n; ++k)
-        if (k != j && std::isfinite(markerError(k, i))) column.push_back(markerError(k, i));
-      if (!column.empty()) perMarker[markers->names[i]] = errorStatistics(column).mean;
-    }
-    std::vector<double> perFrame;
-    for (const ErrorStatistics& s : summary.perFrame) perFrame.push_back(s.mean);
-    metrics["markers"] = fs::absolute(markersPath).string();
-    metrics["marker_mean_error_m"] = summary.pooled.mean;
-    metrics["marker_median_error_m"] = summary.pooled.median;
-    metrics["marker_max_error_m"] = summary.pooled.max;
-    metrics["marker_within_5cm"] = summary.pooled.within5cm;
-    metrics["marker_within_10cm"] = summary.pooled.within10cm;
-    metrics["per_marker_mean_error_m"] = perMarker;
-    metrics["per_frame_marker_error_m"] = perFrame;
-    metrics["marker_cumulative_error"] = {{"threshold_m", summary.thresholds},
-                                          {"fraction", summary.fractions}};
-  }
+  if (anchors) addVertexErrorMetrics(metrics, errors, j, truthInput, anchors->count());
+  if (markers) addMarkerMetrics(metrics, aligned, *markers, j, markersPath);
   // Without ground truth too: how well the result covers each frame, and how smoothly it moves.
   std::vector<double> coverage(n), jitter;
   parallelFor(
@@ -682,5 +647,21 @@ int runAlign(const Args& args)
     std::printf("report: %s\n", (out / "report.html").c_str());
   }
   return 0;
+}
+} // namespace
+
+int runAlign(const Args& args)
+{
+  return alignCommand(args, AlignMode::Full);
+}
+
+int runCorrespond(const Args& args)
+{
+  return alignCommand(args, AlignMode::CorrespondOnly);
+}
+
+int runFit(const Args& args)
+{
+  return alignCommand(args, AlignMode::FitOnly);
 }
 } // namespace clothtrack::app

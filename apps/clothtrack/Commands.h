@@ -9,8 +9,12 @@ namespace clothtrack::app
 using Args = std::vector<std::string>;
 
 int runAlign(const Args& args);
+int runCorrespond(const Args& args);
+int runFit(const Args& args);
 int runInspect(const Args& args);
 int runReport(const Args& args);
+int runEval(const Args& args);
+int runRender(const Args& args);
 int runConvert(const Args& args);
 int runBodyModel(const Args& args);
 int runSimulateCapture(const Args& args);

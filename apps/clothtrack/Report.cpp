@@ -38,6 +38,17 @@ std::string packageDirectory()
 
 void writeReport(const std::string& folder)
 {
+  runPackageModule("clothtrack.report", folder, {});
+}
+
+void writeMovie(const std::string& folder, const std::vector<std::string>& options)
+{
+  runPackageModule("clothtrack.movie", folder, options);
+}
+
+void runPackageModule(const std::string& module, const std::string& folder,
+                      const std::vector<std::string>& options)
+{
   if (!std::filesystem::is_regular_file(std::filesystem::path(folder) / "metrics.json"))
     throw UsageError{folder + ": no metrics.json (run 'clothtrack align' first)"};
   const std::string python = CLOTHTRACK_PYTHON_EXECUTABLE;
@@ -46,16 +57,16 @@ void writeReport(const std::string& folder)
   if (!display || !*display)
   {
     if (!onPath("xvfb-run"))
-      throw UsageError{"the report's renders need an X display or xvfb-run (Debian: xvfb)"};
+      throw UsageError{"renders need an X display or xvfb-run (Debian: xvfb)"};
     command = {"xvfb-run", "-a", "-s", "-screen 0 1280x800x24"};
   }
-  for (const std::string& part :
-       {python, std::string("-m"), std::string("clothtrack.report"), folder})
+  for (const std::string& part : {python, std::string("-m"), module, folder})
     command.push_back(part);
+  command.insert(command.end(), options.begin(), options.end());
 
   const std::string pythonPath = packageDirectory();
   const pid_t child = fork();
-  if (child < 0) throw UsageError{"report: cannot start " + python};
+  if (child < 0) throw UsageError{module + ": cannot start " + python};
   if (child == 0)
   {
     const char* old = std::getenv("PYTHONPATH");
@@ -69,7 +80,7 @@ void writeReport(const std::string& folder)
   }
   int status = 0;
   if (waitpid(child, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw UsageError{"report: '" + command.front() + " ... clothtrack.report' failed (exit " +
+    throw UsageError{module + ": '" + command.front() + " ... " + module + "' failed (exit " +
                      std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
                      "); the aligned sequence and metrics.json are written"};
 }

@@ -43,6 +43,17 @@ if (mean GREATER 0.04 OR within10 LESS 0.95 OR NOT rss GREATER 10 OR NOT fit_sec
   message(FATAL_ERROR "metrics.json: mean error ${mean} m, within 10 cm ${within10}, rss ${rss}, fit ${fit_seconds} s")
 endif ()
 
+# eval recomputes the errors of the folder from its aligned frames: the same figures.
+expect_run(0 "evaluated 6 frames" eval ${WORK}/out --ground-truth ${WORK}/synth/ground_truth
+  --markers ${WORK}/synth/markers.csv)
+read_metric(eval_mean mean_vertex_error_m)
+read_metric(eval_marker marker_mean_error_m)
+if (NOT eval_mean STREQUAL mean OR NOT eval_marker STREQUAL marker_mean)
+  message(FATAL_ERROR "eval: mean ${eval_mean} (align ${mean}), markers ${eval_marker} (align ${marker_mean})")
+endif ()
+expect_run(1 "eval needs --ground-truth" eval ${WORK}/out)
+expect_run(1 "no metrics.json" eval ${WORK}/empty --ground-truth ${WORK}/synth/ground_truth)
+
 # Frames 0 and 5 lost (as if the run had been stopped): a second run fits only those.
 file(REMOVE ${WORK}/out/aligned/aligned_0000.vtp ${WORK}/out/aligned/aligned_0005.vtp ${WORK}/out/metrics.json)
 expect_run(0 "4 resumed" align ${WORK}/synth/frames --ground-truth ${WORK}/synth/ground_truth -o ${WORK}/out --no-report)
@@ -64,6 +75,22 @@ string(JSON lbfgs_correspond GET "${lbfgs_metrics}" stage_seconds correspond)
 string(JSON lbfgs_resumed GET "${lbfgs_metrics}" resumed_frames)
 if (lbfgs_correspond GREATER 0.5 OR NOT lbfgs_resumed EQUAL 0 OR lbfgs_mean GREATER 0.05)
   message(FATAL_ERROR "shared work folder: correspondence ${lbfgs_correspond} s, resumed ${lbfgs_resumed}, error ${lbfgs_mean}")
+endif ()
+# The stages alone: correspond, then fit from the same work folder, then a movie.
+expect_run(0 "landmarks and correspondences of 3 frames" correspond ${WORK}/synth/frames --frames 0:3
+  -o ${WORK}/staged)
+expect_run(0 "body fit: landmarks of 3 frames reused" fit ${WORK}/synth/frames --frames 0:3 -o ${WORK}/staged
+  --ground-truth ${WORK}/synth/ground_truth --no-report)
+file(READ ${WORK}/staged/metrics.json staged_metrics)
+string(JSON staged_mean GET "${staged_metrics}" mean_vertex_error_m)
+string(JSON staged_correspond GET "${staged_metrics}" stage_seconds correspond)
+if (staged_mean GREATER 0.04 OR staged_correspond GREATER 0.5)
+  message(FATAL_ERROR "fit after correspond: error ${staged_mean}, correspondence ${staged_correspond} s")
+endif ()
+expect_run(1 "run 'clothtrack correspond'" fit ${WORK}/synth/frames --frames 2:5 -o ${WORK}/unstaged)
+expect_run(0 "wrote 3 frames" render ${WORK}/staged --movie-only --size 320x320)
+if (NOT EXISTS ${WORK}/staged/movie/movie_0002.png)
+  message(FATAL_ERROR "render wrote no movie frames")
 endif ()
 # The ablation without Ec and prediction needs no body fit.
 expect_run(0 "body fit: skipped" align ${WORK}/synth/frames --frames 0:3 -o ${WORK}/icp --no-correspondence

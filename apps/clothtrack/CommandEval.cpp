@@ -1,0 +1,163 @@
+// clothtrack eval: the errors of an aligned sequence already on disk (the output folder of
+// 'align') against a ground truth and/or markers, without aligning again. Adds the error entries
+// to OUT/metrics.json and the Error array to every aligned frame.
+#include "Commands.h"
+#include "ErrorMetrics.h"
+#include "Options.h"
+#include "TextFile.h"
+
+#include "ctMeshConversion.h"
+
+#include <clothtrack/AlignmentError.h>
+#include <clothtrack/Error.h>
+#include <clothtrack/FrameList.h>
+
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+namespace fs = std::filesystem;
+
+namespace clothtrack::app
+{
+namespace
+{
+nlohmann::json readMetrics(const fs::path& path)
+{
+  std::ifstream in(path);
+  if (!in) throw UsageError{path.string() + ": no metrics.json (run 'clothtrack align' first)"};
+  try
+  {
+    return nlohmann::json::parse(in);
+  }
+  catch (const nlohmann::json::exception& e)
+  {
+    throw UsageError{path.string() + ": not valid JSON (" + e.what() + ")"};
+  }
+}
+
+vtkSmartPointer<vtkPolyData> readAligned(const fs::path& path)
+{
+  if (!fs::exists(path)) throw UsageError{path.string() + ": aligned frame missing"};
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* data = reader->GetOutput();
+  if (!data || data->GetNumberOfPoints() == 0)
+    throw UsageError{path.string() + ": unreadable or empty aligned frame"};
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(data);
+  return copy;
+}
+} // namespace
+
+int runEval(const Args& args)
+{
+  std::string folder, truthInput, markersPath;
+  double truthDistance = 0.03;
+  po::options_description options("eval options");
+  options.add_options()("folder", po::value(&folder)->required(),
+                        "output folder of 'clothtrack align' (metrics.json, aligned/)")(
+      "ground-truth", po::value(&truthInput),
+      "ground-truth sequence (one connectivity, the same frames as the aligned input)")(
+      "markers", po::value(&markersPath), "marker trajectories (CSV frame,time,marker,x,y,z)")(
+      "truth-distance", po::value(&truthDistance)->default_value(truthDistance),
+      "template vertices further than this from the ground truth have no error (m)");
+  po::positional_options_description positional;
+  positional.add("folder", 1);
+  po::variables_map values;
+  if (!parseOptions(args, "clothtrack eval OUT [--ground-truth GT] [--markers CSV]", options,
+                    positional, values))
+    return 0;
+  if (truthInput.empty() && markersPath.empty())
+    throw UsageError{"eval needs --ground-truth, --markers or both"};
+  if (!(truthDistance > 0)) throw UsageError{"--truth-distance must be positive"};
+
+  const fs::path out(folder);
+  nlohmann::json metrics = readMetrics(out / "metrics.json");
+  std::vector<int> frameNumbers;
+  int j = -1;
+  SequenceOptions seq;
+  try
+  {
+    frameNumbers = metrics.at("frame_numbers").get<std::vector<int>>();
+    j = metrics.at("template_frame").get<int>();
+    seq.unit = metrics.at("unit").get<std::string>();
+    seq.up = metrics.at("up").get<std::string>();
+  }
+  catch (const nlohmann::json::exception&)
+  {
+    throw UsageError{(out / "metrics.json").string() +
+                     ": lacks frame_numbers, template_frame, unit or up (not written by align?)"};
+  }
+  const int n = static_cast<int>(frameNumbers.size());
+  if (n < 2 || j < 0 || j >= n)
+    throw UsageError{(out / "metrics.json").string() + ": inconsistent frames or template frame"};
+
+  std::vector<vtkSmartPointer<vtkPolyData>> frames;
+  std::vector<Points> aligned;
+  for (int k : frameNumbers)
+  {
+    char name[48];
+    std::snprintf(name, sizeof(name), "aligned/aligned_%04d.vtp", k);
+    frames.push_back(readAligned(out / name));
+    aligned.push_back(toTriangleMesh(frames.back(), (out / name).string()).V);
+    if (aligned.back().rows() != aligned.front().rows())
+      throw UsageError{(out / name).string() + ": not the template's vertex count"};
+  }
+
+  if (!truthInput.empty())
+  {
+    const std::vector<std::string> files = listFrames(truthInput);
+    const FrameConventions conventions = toConventions(seq);
+    std::vector<Eigen::VectorXd> errors(n);
+    std::optional<TruthAnchors> anchors;
+    std::vector<TriangleMesh> truth(n);
+    for (int k = 0; k < n; ++k)
+    {
+      if (frameNumbers[k] >= static_cast<int>(files.size()))
+        throw UsageError{truthInput + ": " + std::to_string(files.size()) +
+                         " ground-truth frames, the aligned sequence needs frame " +
+                         std::to_string(frameNumbers[k])};
+      truth[k] = loadFrame(files[frameNumbers[k]], conventions);
+      if (truth[k].numFaces() != truth[0].numFaces())
+        throw UsageError{files[frameNumbers[k]] + ": the ground truth must keep one connectivity"};
+    }
+    anchors = anchorToTruth(aligned[j], truth[j], truthDistance);
+    for (int k = 0; k < n; ++k)
+    {
+      errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
+      vtkNew<vtkDoubleArray> array;
+      array->SetName("Error");
+      array->SetNumberOfTuples(errors[k].size());
+      for (Eigen::Index i = 0; i < errors[k].size(); ++i) array->SetValue(i, errors[k][i]);
+      frames[k]->GetPointData()->AddArray(array); // replaces an Error array already there
+      writeCollectionFrame((out / "aligned.pvd").string(), frameNumbers[k], frames[k], false);
+    }
+    addVertexErrorMetrics(metrics, errors, j, truthInput, anchors->count());
+  }
+  if (!markersPath.empty())
+    addMarkerMetrics(metrics, aligned, selectedMarkers(markersPath, frameNumbers), j, markersPath);
+  writeTextAtomically((out / "metrics.json").string(), metrics.dump(2) + "\n");
+
+  std::printf("evaluated %d frames (template frame %d)", n, j);
+  if (metrics.contains("mean_vertex_error_m") && !truthInput.empty())
+    std::printf("; mean vertex error %.2f cm, %.2f %% within 10 cm",
+                100 * metrics["mean_vertex_error_m"].get<double>(),
+                100 * metrics["within_10cm"].get<double>());
+  if (!markersPath.empty())
+    std::printf("; markers %.2f cm", 100 * metrics["marker_mean_error_m"].get<double>());
+  std::printf("\nupdated %s\n", (out / "metrics.json").c_str());
+  return 0;
+}
+} // namespace clothtrack::app
