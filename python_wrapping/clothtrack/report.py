@@ -4,7 +4,8 @@ usage: python3 -m clothtrack.report OUT   (OUT holds metrics.json and aligned.pv
 display for the renders: 'clothtrack report OUT' starts a virtual one when there is none)
 
 Writes OUT/images/per_frame_error.png, cumulative_error.png, frame_NNNN.png (input frame, template,
-result coloured by error) and OUT/report.html.
+result coloured by error), correspondence_NNNN.png (a colour field on the template carried to the frame)
+and OUT/report.html.
 """
 import html
 import json
@@ -143,6 +144,82 @@ def _render_frame(out, metrics, k, path, error_range):
     save_png(window, path)
 
 
+def _render_correspondence(out, metrics, k, path):
+    """A smooth colour field on the template (its position at the template frame), carried by the
+    alignment to frame k, and from there to the input frame's own vertices (nearest aligned vertex):
+    the dense correspondence the alignment makes (paper Figures 4 and 5)."""
+    import numpy as np
+    from vtkmodules.util import numpy_support
+    from vtkmodules.vtkCommonDataModel import vtkStaticPointLocator
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkTextActor
+
+    from clothtrack.rendering import offscreen_window, save_png
+    from clothtrack.sequence import read_sequence
+
+    def aligned_frame(index):
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(str(out / "aligned" / ("aligned_%04d.vtp" % metrics["frame_numbers"][index])))
+        reader.Update()
+        return reader.GetOutput()
+
+    j = metrics["template_frame"]
+    template, result = aligned_frame(j), aligned_frame(k)
+    frame = read_sequence(metrics["files"][k], length_unit=metrics["unit"], up_axis=metrics["up"])[0]
+    points = numpy_support.vtk_to_numpy(template.GetPoints().GetData())
+    low, high = points.min(0), points.max(0)
+    rgb = (255 * (0.15 + 0.85 * (points - low) / np.maximum(high - low, 1e-9))).astype(np.uint8)
+    locator = vtkStaticPointLocator()
+    locator.SetDataSet(result)
+    locator.BuildLocator()
+    frame_points = numpy_support.vtk_to_numpy(frame.GetPoints().GetData())
+    nearest = np.array([locator.FindClosestPoint(p) for p in frame_points], dtype=np.int64)
+
+    def coloured(mesh, colours):
+        copy = mesh.NewInstance()
+        copy.ShallowCopy(mesh)
+        array = numpy_support.numpy_to_vtk(np.ascontiguousarray(colours), deep=1)
+        array.SetName("Colour")
+        copy.GetPointData().SetScalars(array)
+        normals = vtkPolyDataNormals()
+        normals.SplittingOff()
+        normals.SetInputData(copy)
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(normals.GetOutputPort())
+        mapper.SetColorModeToDirectScalars()
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        return actor
+
+    number = metrics["frame_numbers"]
+    panels = [("template (frame %d)" % number[j], coloured(template, rgb)),
+              ("aligned template, frame %d" % number[k], coloured(result, rgb)),
+              ("input frame %d, nearest aligned vertex" % number[k], coloured(frame, rgb[nearest]))]
+    window = offscreen_window(1200, 560)
+    for index, (title, actor) in enumerate(panels):
+        renderer = vtkRenderer()
+        renderer.SetViewport(index / 3, 0, (index + 1) / 3, 1)
+        renderer.SetBackground(1, 1, 1)
+        renderer.AddActor(actor)
+        text = vtkTextActor()
+        text.SetInput(title)
+        text.GetTextProperty().SetColor(0, 0, 0)
+        text.GetTextProperty().SetFontSize(16)
+        text.SetPosition(10, 530)
+        renderer.AddActor2D(text)
+        bounds = actor.GetBounds()
+        centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
+        camera = renderer.GetActiveCamera()
+        camera.SetFocalPoint(*centre)
+        camera.SetPosition(centre[0] + 1.2, centre[1] + 0.5, centre[2] + 3.2)
+        camera.SetViewUp(0, 1, 0)
+        renderer.ResetCamera(bounds)
+        camera.Zoom(1.25)
+        window.AddRenderer(renderer)
+    save_png(window, path)
+
+
 def _table(rows):
     cells = "".join("<tr><th>%s</th><td>%s</td></tr>" % (html.escape(k), html.escape(v)) for k, v in rows)
     return "<table>%s</table>" % cells
@@ -164,6 +241,10 @@ def write_report(out):
         name = "frame_%04d.png" % metrics["frame_numbers"][k]
         _render_frame(out, metrics, k, images / name, error_range)
         renders.append((k, name))
+        if k != metrics["template_frame"]:
+            name = "correspondence_%04d.png" % metrics["frame_numbers"][k]
+            _render_correspondence(out, metrics, k, images / name)
+            renders.append((k, name))
 
     rows = [("input", metrics["input"]), ("frames", str(metrics["frames"])),
             ("template frame", "%d (%s)" % (metrics["template_frame"], os.path.basename(metrics["template_file"]))),
@@ -193,9 +274,12 @@ def write_report(out):
     body = ["<h1>ClothTrack alignment report</h1>", _table(rows), "<h2>Per frame</h2>"]
     body += ['<img src="images/%s" alt="%s">' % (p, p) for p in plots]
     body.append("<h2>Frames</h2>")
+    shown = set()
     for k, name in renders:
-        body.append("<h3>frame %d</h3><img src=\"images/%s\" alt=\"frame %d\">" % (
-            metrics["frame_numbers"][k], name, metrics["frame_numbers"][k]))
+        if k not in shown:
+            body.append("<h3>frame %d</h3>" % metrics["frame_numbers"][k])
+            shown.add(k)
+        body.append("<img src=\"images/%s\" alt=\"%s\">" % (name, name))
     page = ("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>ClothTrack report</title>"
             "<style>body{font-family:sans-serif;max-width:1240px;margin:auto}th{text-align:left;"
             "padding-right:2em}img{max-width:100%}</style></head><body>\n"
