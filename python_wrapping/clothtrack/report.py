@@ -77,9 +77,9 @@ def _chosen_frames(metrics):
 def _render_frame(out, metrics, k, path, error_range):
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
     from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
-    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkTextActor
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
-    from clothtrack.rendering import colour_actor, offscreen_window, save_png
+    from clothtrack.rendering import colour_actor
     from clothtrack.sequence import read_sequence
 
     number = metrics["frame_numbers"][k]
@@ -92,7 +92,6 @@ def _render_frame(out, metrics, k, path, error_range):
     template = read_sequence(metrics["files"][metrics["template_frame"]], **conventions)[0]
     array = "Error" if result.GetPointData().GetArray("Error") else "SurfaceDistance"
 
-    window = offscreen_window(1200, 560)
     panels = [("input frame %d" % number, colour_actor(frame, (0.85, 0.85, 0.85), smooth_normals=True)),
               ("template (frame %d)" % metrics["frame_numbers"][metrics["template_frame"]],
                colour_actor(template, (0.86, 0.72, 0.62), smooth_normals=True))]
@@ -108,9 +107,30 @@ def _render_frame(out, metrics, k, path, error_range):
     coloured.SetMapper(mapper)
     label = "error (m)" if array == "Error" else "distance to frame (m)"
     panels.append(("aligned template, %s" % label.split(" (")[0], coloured))
+    bar = vtkScalarBarActor()
+    bar.SetLookupTable(mapper.GetLookupTable())
+    bar.SetTitle(label)
+    bar.SetNumberOfLabels(6)
+    bar.SetWidth(0.12)
+    bar.SetHeight(0.6)
+    bar.SetPosition(0.85, 0.2)
+    bar.GetTitleTextProperty().SetColor(0, 0, 0)
+    bar.GetLabelTextProperty().SetColor(0, 0, 0)
+    bar.SetLabelFormat("%.2f")
+    _save_panels(panels, path, bar)
+
+
+def _save_panels(panels, path, bar=None):
+    """Draws (title, actor) panels side by side, each framed on its own actor (the template frame may
+    be elsewhere in the room), with `bar` in the last one, and writes the PNG."""
+    from vtkmodules.vtkRenderingCore import vtkRenderer, vtkTextActor
+
+    from clothtrack.rendering import offscreen_window, save_png
+
+    window = offscreen_window(1200, 560)
     for index, (title, actor) in enumerate(panels):
         renderer = vtkRenderer()
-        renderer.SetViewport(index / 3, 0, (index + 1) / 3, 1)
+        renderer.SetViewport(index / len(panels), 0, (index + 1) / len(panels), 1)
         renderer.SetBackground(1, 1, 1)
         renderer.AddActor(actor)
         text = vtkTextActor()
@@ -119,19 +139,8 @@ def _render_frame(out, metrics, k, path, error_range):
         text.GetTextProperty().SetFontSize(16)
         text.SetPosition(10, 530)
         renderer.AddActor2D(text)
-        if index == 2:
-            bar = vtkScalarBarActor()
-            bar.SetLookupTable(mapper.GetLookupTable())
-            bar.SetTitle(label)
-            bar.SetNumberOfLabels(6)
-            bar.SetWidth(0.12)
-            bar.SetHeight(0.6)
-            bar.SetPosition(0.85, 0.2)
-            bar.GetTitleTextProperty().SetColor(0, 0, 0)
-            bar.GetLabelTextProperty().SetColor(0, 0, 0)
-            bar.SetLabelFormat("%.2f")
+        if bar is not None and index == len(panels) - 1:
             renderer.AddActor2D(bar)
-        # Each panel framed on its own mesh: the template frame may be elsewhere in the room.
         bounds = actor.GetBounds()
         centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
         camera = renderer.GetActiveCamera()
@@ -139,7 +148,7 @@ def _render_frame(out, metrics, k, path, error_range):
         camera.SetPosition(centre[0] + 1.2, centre[1] + 0.5, centre[2] + 3.2)
         camera.SetViewUp(0, 1, 0)
         renderer.ResetCamera(bounds)
-        camera.Zoom(1.25)
+        camera.Zoom(1.15)
         window.AddRenderer(renderer)
     save_png(window, path)
 
@@ -153,9 +162,8 @@ def _render_correspondence(out, metrics, k, path):
     from vtkmodules.vtkCommonDataModel import vtkStaticPointLocator
     from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkTextActor
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
-    from clothtrack.rendering import offscreen_window, save_png
     from clothtrack.sequence import read_sequence
 
     def aligned_frame(index):
@@ -196,28 +204,7 @@ def _render_correspondence(out, metrics, k, path):
     panels = [("template (frame %d)" % number[j], coloured(template, rgb)),
               ("aligned template, frame %d" % number[k], coloured(result, rgb)),
               ("input frame %d, nearest aligned vertex" % number[k], coloured(frame, rgb[nearest]))]
-    window = offscreen_window(1200, 560)
-    for index, (title, actor) in enumerate(panels):
-        renderer = vtkRenderer()
-        renderer.SetViewport(index / 3, 0, (index + 1) / 3, 1)
-        renderer.SetBackground(1, 1, 1)
-        renderer.AddActor(actor)
-        text = vtkTextActor()
-        text.SetInput(title)
-        text.GetTextProperty().SetColor(0, 0, 0)
-        text.GetTextProperty().SetFontSize(16)
-        text.SetPosition(10, 530)
-        renderer.AddActor2D(text)
-        bounds = actor.GetBounds()
-        centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
-        camera = renderer.GetActiveCamera()
-        camera.SetFocalPoint(*centre)
-        camera.SetPosition(centre[0] + 1.2, centre[1] + 0.5, centre[2] + 3.2)
-        camera.SetViewUp(0, 1, 0)
-        renderer.ResetCamera(bounds)
-        camera.Zoom(1.25)
-        window.AddRenderer(renderer)
-    save_png(window, path)
+    _save_panels(panels, path)
 
 
 def _table(rows):

@@ -10,7 +10,7 @@ import shutil
 import subprocess
 import sys
 
-from paraview.simple import Hide, LoadPlugin, Render, SaveScreenshot  # noqa: F401
+from paraview.simple import Hide, LoadPlugin, SaveScreenshot
 
 plugin, app, scratch, baselines = sys.argv[1:5]
 here = os.path.dirname(os.path.abspath(__file__))
