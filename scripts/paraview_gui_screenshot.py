@@ -2,10 +2,13 @@
 """Screenshot of the ParaView GUI with the ClothTrack plugin loaded and a state file open, taken on a
 virtual display (for the docs, and to try the plugin as a user would).
 
-usage: paraview_gui_screenshot.py PLUGIN_DIR STATE.pvsm OUT.png [--wait SECONDS] [--size WxH]
+usage: paraview_gui_screenshot.py PLUGIN_DIR OUT.png [--state STATE.pvsm] [--events EVENTS.xml]
+                                  [--wait SECONDS] [--size WxH]
 
-Starts Xvfb with its framebuffer in a file, runs `paraview --state=STATE` with the plugin found
-through PV_PLUGIN_PATH, waits, and converts the framebuffer (XWD) to PNG.
+Starts Xvfb with its framebuffer in a file, runs `paraview` with the plugin found through
+PV_PLUGIN_PATH (and the state, and a recorded event script played by ParaView's --test-script, e.g.
+scripts/paraview_filters_menu.xml, which opens Filters > ClothTrack), waits, and converts the
+framebuffer (XWD) to PNG.
 """
 import argparse
 import os
@@ -36,8 +39,9 @@ def read_xwd(path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("plugin_dir")
-    parser.add_argument("state")
     parser.add_argument("out")
+    parser.add_argument("--state", help="a ParaView state file to open")
+    parser.add_argument("--events", help="a ParaView event script (XML) to play once started")
     parser.add_argument("--wait", type=float, default=60.0, help="seconds to let ParaView load and render")
     parser.add_argument("--size", default="1280x800")
     args = parser.parse_args()
@@ -57,8 +61,12 @@ def main():
             env = dict(os.environ, DISPLAY=display, HOME=home, PV_PLUGIN_PATH=os.path.abspath(args.plugin_dir))
             env.pop("PYTHONPATH", None)
             width, height = args.size.split("x")
-            gui = subprocess.Popen(["paraview", "--dr", "-geometry", "%sx%s+0+0" % (width, height),
-                                    "--state=" + os.path.abspath(args.state)], env=env,
+            command = ["paraview", "--dr", "-geometry", "%sx%s+0+0" % (width, height)]
+            if args.state:
+                command.append("--state=" + os.path.abspath(args.state))
+            if args.events:
+                command.append("--test-script=" + os.path.abspath(args.events))
+            gui = subprocess.Popen(command, env=env,
                                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
             time.sleep(args.wait)
             if gui.poll() is not None:
