@@ -124,6 +124,19 @@ int ctAlignmentError::RequestData(vtkInformation*, vtkInformationVector** inputV
     frameTable->AddColumn(frameColumn);
     for (auto& column : statistics) frameTable->AddColumn(column);
     frameTable->AddColumn(verticesColumn);
+    // The whole sequence (every frame but the template frame), as the app's metrics.json has it.
+    const ErrorStatistics& all = summary.pooled;
+    vtkFieldData* pooled = frameTable->GetFieldData();
+    const std::pair<const char*, double> sequenceValues[] = {
+        {"SequenceMean", all.mean},
+        {"SequenceMedian", all.median},
+        {"SequenceP90", all.p90},
+        {"SequenceMax", all.max},
+        {"SequenceWithin5cm", all.within5cm},
+        {"SequenceWithin10cm", all.within10cm},
+        {"DriftPerFrame", summary.driftPerFrame}};
+    for (const auto& [name, value] : sequenceValues) addFieldValue(pooled, name, value);
+    addFieldValue(pooled, "WorstFrame", summary.worstFrame);
 
     const size_t rows = summary.thresholds.size();
     auto thresholdColumn = namedArray<vtkDoubleArray>("Threshold", rows);

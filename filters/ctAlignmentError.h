@@ -14,7 +14,9 @@
  *
  * Output port 0: the aligned sequence with point data Error (metres).
  * Output port 1: vtkTable, one row per frame: Frame, Mean, Median, P90, Max, Within5cm,
- * Within10cm (fractions), Vertices (with ground truth).
+ * Within10cm (fractions), Vertices (with ground truth); its field data holds the figures of the
+ * whole sequence, every frame but the template frame pooled: SequenceMean, SequenceMedian,
+ * SequenceP90, SequenceMax, SequenceWithin5cm, SequenceWithin10cm, WorstFrame, DriftPerFrame.
  * Output port 2: vtkTable, the cumulative error curve over every frame but the template frame:
  * Threshold (metres), Fraction.
  */

@@ -130,10 +130,6 @@ Eigen::VectorXd distances(const Points& points, const SurfaceLocator& locator)
     d[i] = locator.closestPoint(points.row(i).transpose()).distance;
   return d;
 }
-} // namespace
-
-namespace
-{
 /// What a run does: everything ('align'), stages 1 and 2 into the work folder ('correspond'), or
 /// stage 3 and the evaluation from a work folder that 'correspond' filled ('fit').
 enum class AlignMode
@@ -269,16 +265,7 @@ int alignCommand(const Args& args, AlignMode mode)
                    fs::path(files[k]).filename().c_str());
   }
   if (n < 2) throw UsageError{input + ": at least two readable frames are needed"};
-  std::vector<TriangleMesh> truth;
-  for (const std::string& file : truthFiles)
-  {
-    truth.push_back(loadFrame(file, conventions));
-    if (truth.back().numFaces() != truth.front().numFaces())
-      throw UsageError{file + ": the ground truth must keep one connectivity (" +
-                       std::to_string(truth.back().numFaces()) + " triangles, frame " +
-                       std::to_string(frameNumber[truth.size() - 1]) + "; " +
-                       std::to_string(truth.front().numFaces()) + " in the first)"};
-  }
+  const std::vector<TriangleMesh> truth = loadGroundTruth(truthFiles, conventions);
   stageSeconds["read"] = since(t0);
 
   // Markers are read now, so that a bad file stops the run before the long stages.
@@ -319,7 +306,6 @@ int alignCommand(const Args& args, AlignMode mode)
                                                  return true;
                                                });
     progress.finish();
-    landmarks.resize(n);
     parallelFor(
         0, n,
         [&](int k)

@@ -24,7 +24,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 
 namespace fs = std::filesystem;
 
@@ -119,24 +118,21 @@ int runEval(const Args& args)
   if (!truthInput.empty())
   {
     const std::vector<std::string> files = listFrames(truthInput);
-    const FrameConventions conventions = toConventions(seq);
-    std::vector<Eigen::VectorXd> errors(n);
-    std::optional<TruthAnchors> anchors;
-    std::vector<TriangleMesh> truth(n);
-    for (int k = 0; k < n; ++k)
+    std::vector<std::string> selected;
+    for (int k : frameNumbers)
     {
-      if (frameNumbers[k] >= static_cast<int>(files.size()))
+      if (k >= static_cast<int>(files.size()))
         throw UsageError{truthInput + ": " + std::to_string(files.size()) +
                          " ground-truth frames, the aligned sequence needs frame " +
-                         std::to_string(frameNumbers[k])};
-      truth[k] = loadFrame(files[frameNumbers[k]], conventions);
-      if (truth[k].numFaces() != truth[0].numFaces())
-        throw UsageError{files[frameNumbers[k]] + ": the ground truth must keep one connectivity"};
+                         std::to_string(k)};
+      selected.push_back(files[k]);
     }
-    anchors = anchorToTruth(aligned[j], truth[j], truthDistance);
+    const std::vector<TriangleMesh> truth = loadGroundTruth(selected, toConventions(seq));
+    const TruthAnchors anchors = anchorToTruth(aligned[j], truth[j], truthDistance);
+    std::vector<Eigen::VectorXd> errors(n);
     for (int k = 0; k < n; ++k)
     {
-      errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
+      errors[k] = vertexErrors(aligned[k], truth[k], anchors);
       vtkNew<vtkDoubleArray> array;
       array->SetName("Error");
       array->SetNumberOfTuples(errors[k].size());
@@ -144,7 +140,7 @@ int runEval(const Args& args)
       frames[k]->GetPointData()->AddArray(array); // replaces an Error array already there
       writeCollectionFrame((out / "aligned.pvd").string(), frameNumbers[k], frames[k], false);
     }
-    addVertexErrorMetrics(metrics, errors, j, truthInput, anchors->count());
+    addVertexErrorMetrics(metrics, errors, j, truthInput, anchors.count());
   }
   if (!markersPath.empty())
     addMarkerMetrics(metrics, aligned, selectedMarkers(markersPath, frameNumbers), j, markersPath);

@@ -8,6 +8,21 @@
 
 namespace clothtrack::app
 {
+std::vector<TriangleMesh> loadGroundTruth(const std::vector<std::string>& files,
+                                          const FrameConventions& conventions)
+{
+  std::vector<TriangleMesh> truth;
+  for (const std::string& file : files)
+  {
+    truth.push_back(loadFrame(file, conventions));
+    if (truth.back().numFaces() != truth.front().numFaces())
+      throw UsageError{file + ": the ground truth must keep one connectivity (" +
+                       std::to_string(truth.back().numFaces()) + " triangles; " +
+                       std::to_string(truth.front().numFaces()) + " in the first frame)"};
+  }
+  return truth;
+}
+
 void addVertexErrorMetrics(nlohmann::json& metrics, const std::vector<Eigen::VectorXd>& errors,
                            int templateFrame, const std::string& truthInput, int verticesWithTruth)
 {

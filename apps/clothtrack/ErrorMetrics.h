@@ -1,5 +1,8 @@
 #pragma once
-// The error entries of metrics.json, shared by 'align' and 'eval'.
+// Evaluation shared by 'align' and 'eval': the ground-truth frames and the error entries of
+// metrics.json.
+#include "ctMeshConversion.h"
+
 #include <clothtrack/AlignmentError.h>
 #include <clothtrack/MarkerError.h>
 
@@ -10,6 +13,11 @@
 
 namespace clothtrack::app
 {
+/// Reads the ground-truth frames `files` (one connectivity for all: UsageError naming the file
+/// that breaks it).
+std::vector<TriangleMesh> loadGroundTruth(const std::vector<std::string>& files,
+                                          const FrameConventions& conventions);
+
 /// Vertex errors against a ground truth (one vector per frame): mean_vertex_error_m, within_10cm,
 /// per_frame_* lists, cumulative_error, ...
 void addVertexErrorMetrics(nlohmann::json& metrics, const std::vector<Eigen::VectorXd>& errors,

@@ -20,11 +20,12 @@ class Alignment:
     metrics         dict with the keys of the app's metrics.json: frames, template_frame,
                     mean_surface_distance_m and, with a ground truth, mean_vertex_error_m,
                     median_vertex_error_m, p90_vertex_error_m, max_vertex_error_m, within_5cm,
-                    within_10cm, per_frame_mean_error_m (the template frame is left out of the
-                    pooled figures, as in the app)
+                    within_10cm, worst_frame, drift_m_per_frame, per_frame_mean_error_m (from
+                    ctAlignmentError: the template frame is left out of the pooled figures, as in
+                    the app)
     """
 
-    def __init__(self, aligned, template_frame, errors):
+    def __init__(self, aligned, template_frame, errors=None, frame_errors=None):
         self.aligned = aligned
         self.template_frame = template_frame
         self.positions = np.stack([numpy_support.vtk_to_numpy(a.GetPoints().GetData()) for a in aligned])
@@ -36,17 +37,23 @@ class Alignment:
             "template_frame": template_frame,
             "mean_surface_distance_m": float(np.mean([d.mean() for d in distances])),
         }
-        if errors is not None:
-            pooled = np.delete(errors, template_frame, axis=0) if len(aligned) > 1 else errors
-            pooled = pooled[np.isfinite(pooled)]
+        if frame_errors is not None:  # ctAlignmentError's per-frame table and its sequence figures
+            sequence = frame_errors.GetFieldData()
+
+            def value(name):
+                return sequence.GetArray(name).GetTuple1(0)
+
             self.metrics.update({
-                "mean_vertex_error_m": float(pooled.mean()),
-                "median_vertex_error_m": float(np.median(pooled)),
-                "p90_vertex_error_m": float(np.percentile(pooled, 90)),
-                "max_vertex_error_m": float(pooled.max()),
-                "within_5cm": float((pooled < 0.05).mean()),
-                "within_10cm": float((pooled < 0.10).mean()),
-                "per_frame_mean_error_m": [float(np.nanmean(e)) for e in errors],
+                "mean_vertex_error_m": value("SequenceMean"),
+                "median_vertex_error_m": value("SequenceMedian"),
+                "p90_vertex_error_m": value("SequenceP90"),
+                "max_vertex_error_m": value("SequenceMax"),
+                "within_5cm": value("SequenceWithin5cm"),
+                "within_10cm": value("SequenceWithin10cm"),
+                "worst_frame": int(value("WorstFrame")),
+                "drift_m_per_frame": value("DriftPerFrame"),
+                "per_frame_mean_error_m": [frame_errors.GetValueByName(k, "Mean").ToDouble()
+                                           for k in range(frame_errors.GetNumberOfRows())],
             })
 
 
@@ -127,7 +134,7 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
 
     output = last.GetOutputDataObject(0)
     aligned = [output.GetBlock(k) for k in range(output.GetNumberOfBlocks())]
-    errors = None
-    if last is not fit:
-        errors = np.stack([numpy_support.vtk_to_numpy(a.GetPointData().GetArray("Error")) for a in aligned])
-    return Alignment(aligned, correspondence.GetChosenFrame(), errors)
+    if last is fit:
+        return Alignment(aligned, correspondence.GetChosenFrame())
+    errors = np.stack([numpy_support.vtk_to_numpy(a.GetPointData().GetArray("Error")) for a in aligned])
+    return Alignment(aligned, correspondence.GetChosenFrame(), errors, last.GetFrameErrorOutput())

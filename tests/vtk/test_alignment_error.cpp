@@ -93,6 +93,12 @@ TEST(AlignmentErrorFilter, ErrorsTableAndCurve)
   EXPECT_LT(mean2, 0.0201);
   EXPECT_EQ(table->GetValueByName(0, "Vertices").ToInt(), 642);
   EXPECT_NEAR(table->GetValueByName(1, "Within10cm").ToDouble(), 1.0, 1e-12);
+  // The sequence figures pool frames 0 and 2 (same vertex count): the mean of their means.
+  vtkFieldData* sequence = table->GetFieldData();
+  ASSERT_NE(sequence->GetArray("SequenceMean"), nullptr);
+  EXPECT_NEAR(sequence->GetArray("SequenceMean")->GetTuple1(0), (mean0 + mean2) / 2, 1e-12);
+  EXPECT_EQ(sequence->GetArray("WorstFrame")->GetTuple1(0), 2);
+  EXPECT_NEAR(sequence->GetArray("SequenceWithin10cm")->GetTuple1(0), 1.0, 1e-12);
 
   vtkTable* curve = error->GetCumulativeOutput();
   ASSERT_EQ(curve->GetNumberOfRows(), 41);
