@@ -5,6 +5,7 @@
 #include "Laplacian.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace clothtrack
@@ -28,11 +29,20 @@ FrameTopology frameTopology(const TriangleMesh& mesh, double minimumShellArea)
   return t;
 }
 
+const char* templateCriterionName(TemplateCriterion criterion)
+{
+  return criterion == TemplateCriterion::RestPose ? "rest-pose" : "area-ratio";
+}
+
 TemplateSelection selectTemplate(const std::vector<FrameTopology>& frames,
-                                 const TemplateSelectionOptions& options)
+                                 const TemplateSelectionOptions& options,
+                                 const std::vector<double>& restPoseDistance)
 {
   const int n = static_cast<int>(frames.size());
   if (n == 0) throw Error("template selection: no frame");
+  if (!restPoseDistance.empty() && static_cast<int>(restPoseDistance.size()) != n)
+    throw Error("template selection: " + std::to_string(restPoseDistance.size()) +
+                " rest-pose distances for " + std::to_string(n) + " frames");
   const int k = std::max(1, options.persistence);
   TemplateSelection s;
   s.persistentShells.resize(n);
@@ -55,16 +65,31 @@ TemplateSelection selectTemplate(const std::vector<FrameTopology>& frames,
   for (int i = 0; i < n; ++i)
     if (s.persistentShells[i] == most) lowestGenus = std::min(lowestGenus, frames[i].genus);
   s.candidate.assign(n, 0);
-  double bestRatio = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i)
+    s.candidate[i] = s.persistentShells[i] == most && frames[i].genus == lowestGenus;
+
+  // Rest pose when asked and known for some candidate; unknown poses rank last.
+  auto pose = [&](int i)
+  {
+    const double d = restPoseDistance.empty() ? NAN : restPoseDistance[i];
+    return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
+  };
+  bool byPose = false;
+  if (options.criterion == TemplateCriterion::RestPose)
+    for (int i = 0; i < n; ++i) byPose = byPose || (s.candidate[i] && std::isfinite(pose(i)));
+  s.decidedBy = byPose ? TemplateCriterion::RestPose : TemplateCriterion::AreaRatio;
   for (int i = 0; i < n; ++i)
   {
-    if (s.persistentShells[i] != most || frames[i].genus != lowestGenus) continue;
-    s.candidate[i] = 1;
-    if (s.chosen < 0 || frames[i].areaRatio < bestRatio)
+    if (!s.candidate[i]) continue;
+    if (s.chosen < 0)
     {
-      bestRatio = frames[i].areaRatio;
       s.chosen = i;
+      continue;
     }
+    const int c = s.chosen;
+    const bool better = byPose && pose(i) != pose(c) ? pose(i) < pose(c)
+                                                     : frames[i].areaRatio < frames[c].areaRatio;
+    if (better) s.chosen = i;
   }
   return s;
 }

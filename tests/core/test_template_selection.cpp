@@ -46,3 +46,30 @@ TEST(TemplateSelection, FrameCriteriaFromMeshes)
   EXPECT_GT(t.areaRatio, 1.0);
   EXPECT_LT(t.areaRatio, 3.0); // a regular torus grid is nearly uniform
 }
+
+TEST(TemplateSelection, RestPoseAmongTheTopologicalCandidates)
+{
+  // Frame 1 is not a candidate (genus 1) although its pose is the closest to rest.
+  const std::vector<FrameTopology> frames = {frame(1, 0, 2.0), frame(1, 1, 1.0), frame(1, 0, 9.0),
+                                             frame(1, 0, 3.0), frame(1, 0, 1.5)};
+  const std::vector<double> pose = {2.0, 0.1, 0.5, 0.5, NAN};
+  TemplateSelectionOptions options;
+  TemplateSelection s = selectTemplate(frames, options, pose);
+  EXPECT_EQ(s.decidedBy, TemplateCriterion::RestPose);
+  EXPECT_EQ(s.chosen, 3); // frames 2 and 3 tie on pose; 3 has the smaller area ratio
+  // Frame 4's pose is unknown (failed fit): it ranks after every known pose.
+  EXPECT_NE(s.chosen, 4);
+
+  options.criterion = TemplateCriterion::AreaRatio;
+  s = selectTemplate(frames, options, pose);
+  EXPECT_EQ(s.decidedBy, TemplateCriterion::AreaRatio);
+  EXPECT_EQ(s.chosen, 4);
+
+  // No pose known for any candidate: the area ratio decides.
+  options.criterion = TemplateCriterion::RestPose;
+  s = selectTemplate(frames, options, {NAN, 0.1, NAN, NAN, NAN});
+  EXPECT_EQ(s.decidedBy, TemplateCriterion::AreaRatio);
+  EXPECT_EQ(s.chosen, 4);
+  EXPECT_EQ(selectTemplate(frames, options).chosen, 4);
+  EXPECT_THROW(selectTemplate(frames, options, {1.0, 2.0}), Error);
+}

@@ -127,6 +127,19 @@ TEST(BodyModel, SkinningIsIdentityAtRestAndRigidAlongBones)
   EXPECT_LT(moved, m.numVertices() / 8); // and little else
 }
 
+TEST(BodyModel, RestPoseDistanceSumsTheBends)
+{
+  BodyPose pose;
+  EXPECT_EQ(restPoseDistance(pose), 0.0);
+  // The root's rotation and the translation move the body without bending it.
+  pose.rotations.row(Pelvis) << 0, 2.0, 0;
+  pose.translation = Vec3(1, 2, 3);
+  EXPECT_EQ(restPoseDistance(pose), 0.0);
+  pose.rotations.row(LeftElbow) << 0, 0, 1.2;
+  pose.rotations.row(RightKnee) << 0.3, 0, -0.4;
+  EXPECT_NEAR(restPoseDistance(pose), 1.2 + 0.5, 1e-12);
+}
+
 TEST(BodyModel, FortyOrientedLandmarks)
 {
   const BodyModel& m = model();

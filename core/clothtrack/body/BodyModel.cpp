@@ -113,6 +113,14 @@ BodyPose BodyModel::grounded(const Eigen::VectorXd& beta, const BodyPose& bodyPo
   return out;
 }
 
+double restPoseDistance(const BodyPose& pose)
+{
+  double sum = 0.0;
+  for (int j = 0; j < NumJoints; ++j)
+    if (j != Pelvis) sum += pose.rotations.row(j).norm();
+  return sum;
+}
+
 int BodyModel::landmarkIndex(const std::string& name) const
 {
   for (size_t i = 0; i < landmarks.size(); ++i)

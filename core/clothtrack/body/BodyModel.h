@@ -70,6 +70,11 @@ Points skinPoints(const Points& points, const Eigen::MatrixXd& weights,
                   const Points& jointPositions,
                   const std::vector<Eigen::Matrix4d>& worldTransforms);
 
+/// How far a pose is from the model's rest pose: the sum of the rotation angles (radians) of the
+/// joints below the root. The root rotation and the translation move the body without bending
+/// it, so they do not count.
+double restPoseDistance(const BodyPose& pose);
+
 /// Rodrigues: rotation matrix of an axis-angle vector.
 Eigen::Matrix3d axisAngleToMatrix(const Vec3& axisAngle);
 } // namespace clothtrack
