@@ -24,6 +24,8 @@
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 
+#include <cmath>
+
 #include <memory>
 
 vtkStandardNewMacro(ctBodyFit);
@@ -133,7 +135,8 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
     status->SetName("Status");
     detected->SetName("ExtremitiesDetected");
     matched->SetName("ExtremitiesMatched");
-    vtkNew<vtkDoubleArray> distance, inside, found;
+    vtkNew<vtkDoubleArray> distance, inside, found, restPose;
+    restPose->SetName("RestPoseDistance");
     distance->SetName("MedianDistance");
     inside->SetName("InsideFraction");
     found->SetName("LandmarksFound");
@@ -153,6 +156,9 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
         for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.rotations(j, c));
       for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.translation[c]);
       fd->AddArray(pose);
+      // Known only for a good fit: a poor or failed one must not choose the template.
+      const double fromRest = f.status == BodyFitStatus::Ok ? restPoseDistance(f.pose) : NAN;
+      addFieldValue(fd, "RestPoseDistance", fromRest);
       addFieldValue(fd, "MedianDistance", f.medianDistance);
       addFieldValue(fd, "InsideFraction", f.insideFraction);
       bodies->SetBlock(k, bodyData);
@@ -173,6 +179,7 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
       vtkSmartPointer<vtkPolyData> landmarkData =
           transferredLandmarksToPolyData(points, transferred);
       addLandmarkIdentity(model, landmarkData);
+      addFieldValue(landmarkData->GetFieldData(), "RestPoseDistance", fromRest);
       landmarks->SetBlock(k, landmarkData);
       const double foundFraction =
           landmarkData->GetFieldData()->GetArray("FoundFraction")->GetTuple1(0);
@@ -191,13 +198,14 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
       distance->InsertNextValue(f.medianDistance);
       inside->InsertNextValue(f.insideFraction);
       found->InsertNextValue(foundFraction);
+      restPose->InsertNextValue(fromRest);
       this->UpdateProgress(0.95 + 0.05 * (k + 1) / n);
     }
     for (vtkAbstractArray* column :
          {static_cast<vtkAbstractArray*>(frameColumn), static_cast<vtkAbstractArray*>(status),
           static_cast<vtkAbstractArray*>(distance), static_cast<vtkAbstractArray*>(inside),
           static_cast<vtkAbstractArray*>(detected), static_cast<vtkAbstractArray*>(matched),
-          static_cast<vtkAbstractArray*>(found)})
+          static_cast<vtkAbstractArray*>(found), static_cast<vtkAbstractArray*>(restPose)})
       table->AddColumn(column);
   }
   catch (const Error& e)

@@ -34,6 +34,12 @@ inline void addFieldValue(vtkFieldData* data, const char* name, int value)
   array->SetValue(0, value);
   data->AddArray(array);
 }
+/// The first value of field array `name` of `data`; `missing` when there is no such array.
+inline double fieldValue(vtkFieldData* data, const char* name, double missing)
+{
+  vtkDataArray* array = data ? data->GetArray(name) : nullptr;
+  return array && array->GetNumberOfTuples() > 0 ? array->GetTuple1(0) : missing;
+}
 } // namespace clothtrack
 
 #endif

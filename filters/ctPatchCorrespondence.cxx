@@ -107,7 +107,7 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
                                    "landmarks of " + frameName(sequence->GetBlock(k), k));
     };
 
-    // Template: given, or chosen by topology then area uniformity.
+    // Template: given, or chosen by topology then pose or area uniformity.
     int chosen = this->TemplateFrame;
     if (chosen >= n)
       throw Error("patch correspondence: template frame " + std::to_string(chosen) +
@@ -115,8 +115,17 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
     if (chosen < 0)
     {
       std::vector<FrameTopology> criteria;
-      for (int k = 0; k < n; ++k) criteria.push_back(frameTopology(frameMesh(sequence, k), 0.1));
-      chosen = selectTemplate(criteria, {}).chosen;
+      std::vector<double> restPose;
+      for (int k = 0; k < n; ++k)
+      {
+        criteria.push_back(frameTopology(frameMesh(sequence, k), 0.1));
+        vtkDataObject* block = landmarkBlocks->GetBlock(static_cast<unsigned>(k));
+        restPose.push_back(
+            fieldValue(block ? block->GetFieldData() : nullptr, "RestPoseDistance", NAN));
+      }
+      TemplateSelectionOptions selection;
+      selection.criterion = static_cast<clothtrack::TemplateCriterion>(this->TemplateCriterion);
+      chosen = selectTemplate(criteria, selection, restPose).chosen;
     }
     this->ChosenFrame = chosen;
     this->UpdateProgress(0.05);

@@ -9,7 +9,9 @@
  * FrameFace and FrameBarycentric (output port 1 of ctBodyFit).
  *
  * The template is frame TemplateFrame, or when it is -1 the frame ctTemplateSelection's rule
- * chooses (most persistent shells, smallest genus, most uniform areas). For each landmark
+ * chooses (most persistent shells, smallest genus, then the body closest to the rest pose from
+ * the landmarks' RestPoseDistance field data, or with TemplateCriterion 0 or without poses the
+ * most uniform areas). For each landmark
  * present on the template and on a frame, a patch of the template of intrinsic radius at most
  * MaximumRadius (tau_d) is mapped by equal geodesic polar coordinates around the two landmarks,
  * kept where the map is near-isometric (geodesic distances to the seed and to anchor points
@@ -62,6 +64,9 @@ public:
   /// slides over the body, so they are not the same cloth point in every frame.
   vtkSetClampMacro(MaximumSeedOffset, double, 0.0, 100.0);
   vtkGetMacro(MaximumSeedOffset, double);
+  /// Automatic choice, last criterion: 0 area ratio (the paper's), 1 rest pose (default).
+  vtkSetClampMacro(TemplateCriterion, int, 0, 1);
+  vtkGetMacro(TemplateCriterion, int);
   /// Template frame index; -1 (default) chooses it automatically.
   vtkSetMacro(TemplateFrame, int);
   vtkGetMacro(TemplateFrame, int);
@@ -88,6 +93,7 @@ private:
   double MaximumRadius = 0.25;
   int NumberOfAnchors = 6;
   double MaximumSeedOffset = 0.03;
+  int TemplateCriterion = 1;
   int TemplateFrame = -1;
   int ChosenFrame = -1;
 };

@@ -1,6 +1,7 @@
 #include "ctTemplateSelection.h"
 
 #include "ctMeshConversion.h"
+#include "ctNamedArrays.h"
 
 #include <clothtrack/Error.h>
 #include <clothtrack/MeshValidation.h>
@@ -15,14 +16,17 @@
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
+#include <vtkStringArray.h>
 #include <vtkTable.h>
 
 #include <atomic>
+#include <cmath>
 
 vtkStandardNewMacro(ctTemplateSelection);
 
 ctTemplateSelection::ctTemplateSelection()
 {
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
 }
 
@@ -31,9 +35,10 @@ vtkTable* ctTemplateSelection::GetCriteriaOutput()
   return vtkTable::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-int ctTemplateSelection::FillInputPortInformation(int, vtkInformation* info)
+int ctTemplateSelection::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
+  if (port == 1) info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
 
@@ -86,10 +91,27 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
       vtkErrorMacro(<< "template selection: " << e);
       return 0;
     }
+  std::vector<double> restPose;
+  if (auto* body = vtkMultiBlockDataSet::GetData(inputVector[1], 0))
+  {
+    if (static_cast<int>(body->GetNumberOfBlocks()) != n)
+    {
+      vtkErrorMacro(<< "template selection: the body fit has " << body->GetNumberOfBlocks()
+                    << " frames, the sequence " << n);
+      return 0;
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      vtkDataObject* block = body->GetBlock(static_cast<unsigned>(k));
+      restPose.push_back(
+          fieldValue(block ? block->GetFieldData() : nullptr, "RestPoseDistance", NAN));
+    }
+  }
   TemplateSelectionOptions options;
   options.minimumShellArea = this->MinimumShellArea;
   options.persistence = this->Persistence;
-  const TemplateSelection selection = selectTemplate(frames, options);
+  options.criterion = static_cast<TemplateCriterion>(this->Criterion);
+  const TemplateSelection selection = selectTemplate(frames, options, restPose);
   if (this->TemplateFrame >= n)
   {
     vtkErrorMacro(<< "template frame " << this->TemplateFrame << " out of range: the sequence has "
@@ -104,6 +126,11 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
   chosen->SetName("TemplateFrame");
   chosen->InsertNextValue(this->ChosenFrame);
   output->GetFieldData()->AddArray(chosen);
+  vtkNew<vtkStringArray> decidedBy;
+  decidedBy->SetName("TemplateCriterion");
+  decidedBy->InsertNextValue(this->TemplateFrame >= 0 ? "given"
+                                                      : templateCriterionName(selection.decidedBy));
+  output->GetFieldData()->AddArray(decidedBy);
 
   vtkTable* table = vtkTable::GetData(outputVector, 1);
   auto column = [&](const char* name, auto&& value, auto* array)
@@ -131,6 +158,9 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
   column(
       "Area", [&](int k) { return frames[k].area; }, vtkNew<vtkDoubleArray>().GetPointer());
   column(
+      "RestPoseDistance", [&](int k) { return restPose.empty() ? NAN : restPose[k]; },
+      vtkNew<vtkDoubleArray>().GetPointer());
+  column(
       "Candidate", [&](int k) { return static_cast<int>(selection.candidate[k]); },
       vtkNew<vtkIntArray>().GetPointer());
   column(
@@ -144,5 +174,6 @@ void ctTemplateSelection::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MinimumShellArea: " << this->MinimumShellArea << "\n";
   os << indent << "Persistence: " << this->Persistence << "\n";
+  os << indent << "Criterion: " << this->Criterion << "\n";
   os << indent << "TemplateFrame: " << this->TemplateFrame << "\n";
 }

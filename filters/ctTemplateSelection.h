@@ -1,16 +1,22 @@
 /**
  * @class ctTemplateSelection
- * @brief Chooses the template frame of a sequence by topology, then area uniformity.
+ * @brief Chooses the template frame of a sequence by topology, then body pose or area
+ * uniformity.
  *
  * Input: the whole sequence as a vtkMultiBlockDataSet of vtkPolyData frames (e.g. port 1 of
  * ctMeshSequenceReader). Per frame: connected components, shells (components of at least
  * MinimumShellArea), genus of the largest component and its area ratio (largest / smallest
  * mixed Voronoi vertex area). Splits count only when they persist for Persistence consecutive
- * frames. Candidates have the most shells, then the smallest genus; the template is the
- * candidate with the smallest area ratio. TemplateFrame >= 0 overrides the choice.
+ * frames. Candidates have the most shells, then the smallest genus. Among them, with Criterion
+ * RestPose (default) and the body fit on input port 1, the template is the candidate whose
+ * fitted body is closest to the rest pose; otherwise (Criterion AreaRatio, the paper's, or no
+ * body fit) the candidate with the smallest area ratio. TemplateFrame >= 0 overrides the choice.
+ *
+ * Input port 1 (optional): one block per frame with field data RestPoseDistance, as output
+ * port 0 or 1 of ctBodyFit.
  *
  * Output port 0: the template mesh (field data TemplateFrame). Output port 1: a vtkTable with
- * every frame's criteria and the choice.
+ * every frame's criteria (RestPoseDistance NaN where unknown) and the choice.
  */
 #ifndef ctTemplateSelection_h
 #define ctTemplateSelection_h
@@ -32,6 +38,12 @@ public:
   vtkGetMacro(MinimumShellArea, double);
   vtkSetClampMacro(Persistence, int, 1, 10000);
   vtkGetMacro(Persistence, int);
+  /// Last criterion among the topological candidates: 0 area ratio (the paper's), 1 rest pose
+  /// (default; needs the body fit on port 1, else the area ratio decides).
+  vtkSetClampMacro(Criterion, int, 0, 1);
+  vtkGetMacro(Criterion, int);
+  /// The body fit (output port 0 or 1 of ctBodyFit) on input port 1.
+  void SetBodyFitConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   /// A frame index to use as template; -1 (default) chooses automatically.
   vtkSetMacro(TemplateFrame, int);
   vtkGetMacro(TemplateFrame, int);
@@ -51,6 +63,7 @@ protected:
 
   double MinimumShellArea = 0.1;
   int Persistence = 3;
+  int Criterion = 1;
   int TemplateFrame = -1;
   int ChosenFrame = -1;
 

@@ -2,12 +2,15 @@
 #include "ctBuiltinBodyModel.h"
 #include "ctCaptureSimulation.h"
 #include "ctMeshConversion.h"
+#include "ctNamedArrays.h"
 #include "ctTemplateSelection.h"
 
 #include <clothtrack/Components.h>
 #include <clothtrack/Error.h>
+#include <clothtrack/Primitives.h>
 #include <clothtrack/body/Motion.h>
 
+#include <vtkFieldData.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -17,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 using namespace clothtrack;
@@ -137,6 +141,54 @@ TEST(TemplateSelectionFilter, PicksAFrameWhereTheArmsAreFree)
   selection->Update();
   EXPECT_EQ(selection->GetChosenFrame(), 1);
   selection->SetTemplateFrame(99);
+  selection->GlobalWarningDisplayOff();
+  selection->Update();
+  selection->GlobalWarningDisplayOn();
+  EXPECT_EQ(selection->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(TemplateSelectionFilter, RestPoseFromTheBodyFitDecidesAmongCandidates)
+{
+  // Four closed spheres (one shell, genus 0, near-uniform areas) and a body fit whose frame 2 is
+  // the closest to the rest pose; frame 3's fit failed (NaN).
+  vtkNew<vtkMultiBlockDataSet> sequence, bodies;
+  const std::vector<double> restPose = {1.5, 0.9, 0.4, NAN};
+  for (unsigned k = 0; k < 4; ++k)
+  {
+    sequence->SetBlock(k, toPolyData(icosphere(3 - (k == 1), 0.5)));
+    vtkNew<vtkPolyData> body;
+    addFieldValue(body->GetFieldData(), "RestPoseDistance", restPose[k]);
+    bodies->SetBlock(k, body);
+  }
+  vtkNew<ctTemplateSelection> selection;
+  auto decidedBy = [&]
+  {
+    vtkAbstractArray* array =
+        selection->GetOutput()->GetFieldData()->GetAbstractArray("TemplateCriterion");
+    return array ? array->GetVariantValue(0).ToString() : std::string("none");
+  };
+  selection->SetInputData(0, sequence);
+  selection->Update();
+  const int byArea = selection->GetChosenFrame();
+  EXPECT_NE(byArea, 2);
+  EXPECT_EQ(decidedBy(), "area-ratio");
+
+  selection->SetInputData(1, bodies);
+  selection->Update();
+  EXPECT_EQ(selection->GetChosenFrame(), 2);
+  EXPECT_EQ(decidedBy(), "rest-pose");
+  vtkTable* table = selection->GetCriteriaOutput();
+  EXPECT_DOUBLE_EQ(table->GetValueByName(1, "RestPoseDistance").ToDouble(), 0.9);
+  EXPECT_TRUE(std::isnan(table->GetValueByName(3, "RestPoseDistance").ToDouble()));
+
+  // The paper's criterion ignores the poses.
+  selection->SetCriterion(0);
+  selection->Update();
+  EXPECT_EQ(selection->GetChosenFrame(), byArea);
+
+  // A body fit of another length is an error.
+  bodies->SetNumberOfBlocks(3);
+  selection->SetCriterion(1);
   selection->GlobalWarningDisplayOff();
   selection->Update();
   selection->GlobalWarningDisplayOn();
