@@ -5,10 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 
 namespace clothtrack::app
 {
@@ -24,13 +26,33 @@ Vec3 vec(const nlohmann::json& j)
 {
   return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
 }
+nlohmann::json poseJson(const BodyPose& pose)
+{
+  nlohmann::json rotations = nlohmann::json::array();
+  for (int j = 0; j < NumJoints; ++j) rotations.push_back(vec(Vec3(pose.rotations.row(j).transpose())));
+  return {{"rotations", rotations}, {"translation", vec(pose.translation)}};
+}
+
+BodyPose poseFromJson(const nlohmann::json& j)
+{
+  BodyPose pose;
+  const auto& rotations = j.at("rotations");
+  if (rotations.size() != NumJoints) throw std::runtime_error("another skeleton");
+  for (int k = 0; k < NumJoints; ++k) pose.rotations.row(k) = vec(rotations.at(k)).transpose();
+  pose.translation = vec(j.at("translation"));
+  return pose;
+}
+
+nlohmann::json finiteOrNull(double d)
+{
+  return std::isfinite(d) ? nlohmann::json(d) : nlohmann::json(nullptr);
+}
 } // namespace
 
-void writeLandmarks(const std::string& path, const nlohmann::json& key,
-                    const std::vector<FrameLandmarks>& landmarks)
+void writeBodyStage(const std::string& path, const nlohmann::json& key, const BodyStage& stage)
 {
   nlohmann::json frames = nlohmann::json::array();
-  for (const FrameLandmarks& frame : landmarks)
+  for (const FrameLandmarks& frame : stage.landmarks)
   {
     nlohmann::json list = nlohmann::json::array();
     for (const OrientedSurfacePoint& p : frame)
@@ -41,11 +63,46 @@ void writeLandmarks(const std::string& path, const nlohmann::json& key,
                       {"offset", p.offset}});
     frames.push_back(list);
   }
-  writeTextAtomically(path, nlohmann::json({{"key", key}, {"landmarks", frames}}).dump() + "\n");
+  nlohmann::json bodies = nlohmann::json::array();
+  for (size_t k = 0; k < stage.poses.size(); ++k)
+  {
+    nlohmann::json body = poseJson(stage.poses[k]);
+    body["status"] = static_cast<int>(stage.status[k]);
+    body["rest_pose_distance"] = finiteOrNull(stage.restPoseDistance[k]);
+    bodies.push_back(body);
+  }
+  writeTextAtomically(path, nlohmann::json({{"key", key},
+                                            {"beta", std::vector<double>(stage.beta.data(),
+                                                                         stage.beta.data() +
+                                                                             stage.beta.size())},
+                                            {"bodies", bodies},
+                                            {"landmarks", frames}})
+                                    .dump() +
+                                "\n");
 }
 
-std::optional<std::vector<FrameLandmarks>> readLandmarks(const std::string& path,
-                                                         const nlohmann::json& key)
+void writeBodyFitSummary(const std::string& path, const std::string& modelPath,
+                         const std::vector<std::string>& files, const BodyStage& stage)
+{
+  nlohmann::json frames = nlohmann::json::array();
+  for (size_t k = 0; k < stage.poses.size(); ++k)
+  {
+    nlohmann::json frame = poseJson(stage.poses[k]);
+    frame["file"] = files[k];
+    frame["status"] = bodyFitStatusName(stage.status[k]);
+    frame["rest_pose_distance"] = finiteOrNull(stage.restPoseDistance[k]);
+    frames.push_back(frame);
+  }
+  writeTextAtomically(
+      path, nlohmann::json({{"model", modelPath},
+                            {"beta", std::vector<double>(stage.beta.data(),
+                                                         stage.beta.data() + stage.beta.size())},
+                            {"per_frame", frames}})
+                    .dump(1) +
+                "\n");
+}
+
+std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::json& key)
 {
   std::ifstream in(path);
   if (!in) return std::nullopt;
@@ -53,20 +110,29 @@ std::optional<std::vector<FrameLandmarks>> readLandmarks(const std::string& path
   {
     const nlohmann::json j = nlohmann::json::parse(in);
     if (j.at("key") != key) return std::nullopt;
-    std::vector<FrameLandmarks> out;
+    BodyStage out;
+    const std::vector<double> beta = j.at("beta").get<std::vector<double>>();
+    out.beta = Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
+    for (const auto& body : j.at("bodies"))
+    {
+      out.poses.push_back(poseFromJson(body));
+      out.status.push_back(static_cast<BodyFitStatus>(body.at("status").get<int>()));
+      const auto& d = body.at("rest_pose_distance");
+      out.restPoseDistance.push_back(d.is_number() ? d.get<double>() : NAN);
+    }
     for (const auto& frame : j.at("landmarks"))
     {
       FrameLandmarks list;
       for (const auto& p : frame)
         list.push_back({p.at("id").get<int>(), p.at("face").get<int>(), vec(p.at("bary")),
                         vec(p.at("direction")), p.at("offset").get<double>()});
-      out.push_back(std::move(list));
+      out.landmarks.push_back(std::move(list));
     }
     return out;
   }
-  catch (const nlohmann::json::exception&)
+  catch (const std::exception&) // unreadable or of another model
   {
-    return std::nullopt; // unreadable: recomputed
+    return std::nullopt; // recomputed
   }
 }
 

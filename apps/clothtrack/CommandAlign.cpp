@@ -3,6 +3,7 @@
 //   OUT/metrics.json             timings, memory and, with --ground-truth, the errors
 //   OUT/work/                    intermediate results: a run that was stopped resumes from them
 #include "AlignCache.h"
+#include "BodyFitRun.h"
 #include "Commands.h"
 #include "ErrorMetrics.h"
 #include "Options.h"
@@ -11,7 +12,6 @@
 #include "TextFile.h"
 
 #include "ctBodyModelIO.h"
-#include "ctBuiltinBodyModel.h"
 #include "ctMeshConversion.h"
 
 #include <clothtrack/AlignmentError.h>
@@ -35,6 +35,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -44,6 +45,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <thread>
 
 namespace fs = std::filesystem;
@@ -52,6 +54,33 @@ namespace clothtrack::app
 {
 namespace
 {
+/// --stages: "wc,ws,wd,wt/wc,ws,wd,wt/...", every weight a finite number >= 0.
+std::vector<FitStage> parseStages(const std::string& spec)
+{
+  std::vector<FitStage> stages;
+  std::stringstream all(spec);
+  for (std::string item; std::getline(all, item, '/');)
+  {
+    double w[4];
+    char tail = 0;
+    if (std::sscanf(item.c_str(), "%lf,%lf,%lf,%lf%c", &w[0], &w[1], &w[2], &w[3], &tail) != 4 ||
+        !std::all_of(w, w + 4, [](double x) { return std::isfinite(x) && x >= 0; }))
+      throw UsageError{"--stages: '" + item +
+                       "' is not four weights wc,ws,wd,wt (numbers, 0 or more)"};
+    stages.push_back({w[0], w[1], w[2], w[3]});
+  }
+  if (stages.empty()) throw UsageError{"--stages: no stage"};
+  return stages;
+}
+
+nlohmann::json stagesJson(const std::vector<FitStage>& stages)
+{
+  nlohmann::json out = nlohmann::json::array();
+  for (const FitStage& s : stages)
+    out.push_back({s.correspondence, s.smoothness, s.nearest, s.temporal});
+  return out;
+}
+
 using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point start)
@@ -145,6 +174,7 @@ int alignCommand(const Args& args, AlignMode mode)
       solver = "exact";
   SequenceOptions seq;
   int threads = 0, forcedTemplate = -1;
+  std::string templateCriterion = "rest-pose", stageSpec;
   double truthDistance = 0.03;
   double predictRadius = 0.3;
   TemplateFitOptions fit;
@@ -159,12 +189,18 @@ int alignCommand(const Args& args, AlignMode mode)
       "frames A:B of the input (A included, B not; either may "
       "be left out)")("template", po::value(&forcedTemplate)->default_value(-1),
                       "template frame within the selected frames (-1: chosen automatically)")(
+      "template-criterion", po::value(&templateCriterion)->default_value(templateCriterion),
+      "last template criterion after the topology: rest-pose (fitted body closest to the rest "
+      "pose) or area-ratio (the paper's: most uniform mesh)")(
       "model", po::value(&modelPath), "body model file (default: the built-in model)")(
       "threads", po::value(&threads)->default_value(0),
       "threads (0: all cores)")("skip-bad-frames", po::bool_switch(),
                                 "leave out unreadable frames with a warning instead of stopping")(
       "no-report", po::bool_switch(), "skip the plots, renders and report.html")(
       "solver", po::value(&solver)->default_value(solver), "template fit solver: exact or lbfgs")(
+      "stages", po::value(&stageSpec),
+      "template fit weight stages wc,ws,wd,wt separated by '/' (default the paper's: "
+      "1,400,0,0.1/1,200,10,0.1/0,100,10,0.1/0,50,10,0.1)")(
       "epsilon", po::value(&patches.epsilon)->default_value(patches.epsilon),
       "near-isometry tolerance of the patches (m)")(
       "max-radius", po::value(&patches.maxRadius)->default_value(patches.maxRadius),
@@ -203,15 +239,19 @@ int alignCommand(const Args& args, AlignMode mode)
   if (solver != "exact" && solver != "lbfgs")
     throw UsageError{"--solver must be exact or lbfgs (got '" + solver + "')"};
   fit.solver = solver == "exact" ? FitSolver::Exact : FitSolver::LBFGS;
+  if (!stageSpec.empty()) fit.stages = parseStages(stageSpec);
   if (!(patches.epsilon > 0) || !(patches.minRadius >= 0) || !(patches.maxRadius > 0))
     throw UsageError{"--epsilon and --max-radius must be positive, --min-radius at least 0"};
   if (!(truthDistance > 0)) throw UsageError{"--truth-distance must be positive"};
   if (!(predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
+  const TemplateCriterion criterion = parseTemplateCriterion(templateCriterion);
   setThreadCount(threads);
   const bool skipBad = values["skip-bad-frames"].as<bool>();
   fit.useCorrespondence = !values["no-correspondence"].as<bool>();
-  // Landmarks serve the correspondences and the start prediction; without both, no body fit.
-  const bool needLandmarks = fit.useCorrespondence || predictRadius > 0;
+  // The body fit gives the landmarks (correspondences, start prediction) and the poses that
+  // choose the template; when none of these is wanted, it is skipped.
+  const bool needLandmarks = fit.useCorrespondence || predictRadius > 0 ||
+                             (forcedTemplate < 0 && criterion == TemplateCriterion::RestPose);
   const auto start = Clock::now();
   nlohmann::json stageSeconds;
 
@@ -281,43 +321,49 @@ int alignCommand(const Args& args, AlignMode mode)
   t0 = Clock::now();
   const nlohmann::json landmarkKey = {
       {"files", files}, {"model", modelPath}, {"up", seq.up}, {"unit", seq.unit}};
-  std::vector<FrameLandmarks> landmarks(n);
+  BodyStage body;
+  body.landmarks.resize(n);
+  body.restPoseDistance.assign(n, NAN);
+  std::vector<FrameLandmarks>& landmarks = body.landmarks;
   if (!needLandmarks)
-    std::fprintf(stderr, "body fit: skipped (no correspondence term, no start prediction)\n");
-  else if (auto cached = readLandmarks((work / "landmarks.json").string(), landmarkKey);
-           cached && static_cast<int>(cached->size()) == n)
+    std::fprintf(stderr, "body fit: skipped (no correspondence term, no start prediction, "
+                         "template not chosen by pose)\n");
+  else if (auto cached = readBodyStage((work / "landmarks.json").string(), landmarkKey);
+           cached && static_cast<int>(cached->landmarks.size()) == n &&
+           static_cast<int>(cached->poses.size()) == n)
   {
-    landmarks = std::move(*cached);
+    body = std::move(*cached);
     std::fprintf(stderr, "body fit: landmarks of %d frames reused from %s\n", n,
                  (work / "landmarks.json").c_str());
   }
   else
   {
     BodyModel ownModel;
-    if (!modelPath.empty()) ownModel = readBodyModel(modelPath);
-    const BodyModel& model = modelPath.empty() ? builtinBodyModel() : ownModel;
+    const BodyModel& model = bodyModel(modelPath, ownModel);
     std::vector<const TriangleMesh*> pointers;
     for (const auto& f : frames) pointers.push_back(&f);
-    Progress progress("body-fit", n);
-    const BodyFitResult body = fitBodySequence(model, pointers, {},
-                                               [&](double done)
-                                               {
-                                                 progress.step(static_cast<int>(n * done));
-                                                 return true;
-                                               });
-    progress.finish();
+    const BodyFitResult fitted = fitBodiesWithProgress(model, pointers);
+    body.beta = fitted.beta;
+    for (const BodyFrameFit& f : fitted.frames)
+    {
+      body.poses.push_back(f.pose);
+      body.status.push_back(f.status);
+    }
     parallelFor(
         0, n,
         [&](int k)
         {
-          const TriangleMesh posed = model.posed(body.beta, body.frames[k].pose);
+          if (fitted.frames[k].status == BodyFitStatus::Ok)
+            body.restPoseDistance[k] = restPoseDistance(fitted.frames[k].pose);
+          const TriangleMesh posed = model.posed(fitted.beta, fitted.frames[k].pose);
           const SurfaceLocator locator(frames[k]);
           landmarks[k] =
               landmarkSeeds(transferLandmarks(orientedLandmarks(model, posed), frames[k], locator));
         },
         1);
-    writeLandmarks((work / "landmarks.json").string(), landmarkKey, landmarks);
+    writeBodyStage((work / "landmarks.json").string(), landmarkKey, body);
   }
+  if (needLandmarks) writeBodyFitSummary((out / "body_fit.json").string(), modelPath, files, body);
   for (int k = 0; k < n; ++k)
     if (landmarks[k].empty())
       std::fprintf(stderr,
@@ -329,6 +375,7 @@ int alignCommand(const Args& args, AlignMode mode)
   // Stage 2a: the template frame.
   t0 = Clock::now();
   int j = forcedTemplate;
+  std::string templateDecidedBy = "given";
   if (j >= n)
     throw UsageError{"--template " + std::to_string(j) + " is out of range: " + std::to_string(n) +
                      " frames"};
@@ -337,12 +384,17 @@ int alignCommand(const Args& args, AlignMode mode)
     std::vector<FrameTopology> topology(n);
     parallelFor(
         0, n, [&](int k) { topology[k] = frameTopology(frames[k], 0.1); }, 1);
-    j = selectTemplate(topology, {}).chosen;
+    TemplateSelectionOptions selection;
+    selection.criterion = criterion;
+    const TemplateSelection chosen = selectTemplate(topology, selection, body.restPoseDistance);
+    j = chosen.chosen;
+    templateDecidedBy = templateCriterionName(chosen.decidedBy);
   }
   const TriangleMesh& templ = frames[j];
-  std::fprintf(stderr, "template: frame %d (%s), %d vertices%s\n", j,
+  std::fprintf(stderr, "template: frame %d (%s), %d vertices, %s%s\n", j,
                fs::path(files[j]).filename().c_str(), templ.numVertices(),
-               forcedTemplate >= 0 ? ", set by --template" : "");
+               forcedTemplate >= 0 ? "set by --template" : "chosen by ",
+               forcedTemplate >= 0 ? "" : templateDecidedBy.c_str());
   stageSeconds["select_template"] = since(t0);
 
   // Correspondences depend on the landmarks, the template and the patch options; the aligned
@@ -364,7 +416,8 @@ int alignCommand(const Args& args, AlignMode mode)
                                  {"solver", solver},
                                  {"truth_distance", truthDistance},
                                  {"predict_radius", predictRadius},
-                                 {"use_correspondence", fit.useCorrespondence}};
+                                 {"use_correspondence", fit.useCorrespondence},
+                                 {"stages", stagesJson(fit.stages)}};
   const fs::path runKeyPath = out / "run.json";
   if (!sameKey(runKeyPath, runKey))
   {
@@ -565,6 +618,7 @@ int alignCommand(const Args& args, AlignMode mode)
   metrics["input"] = input;
   metrics["frames"] = n;
   metrics["template_frame"] = j;
+  metrics["template_criterion"] = templateDecidedBy;
   metrics["template_file"] = files[j];
   metrics["template_vertices"] = templ.numVertices();
   metrics["frame_numbers"] = frameNumber;

@@ -2,13 +2,13 @@
 //   OUT/bodies.pvd + bodies/      fitted body per frame (the model's connectivity)
 //   OUT/landmarks.pvd + landmarks/ oriented landmarks on each frame (Valid, Direction, ...)
 //   OUT/body_fit.json             beta, pose and status per frame, landmarks found, timings
+#include "BodyFitRun.h"
 #include "Commands.h"
 #include "Options.h"
 #include "Progress.h"
 #include "TextFile.h"
 
 #include "ctBodyModelIO.h"
-#include "ctBuiltinBodyModel.h"
 #include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
 
@@ -94,27 +94,12 @@ int runBodyFit(const Args& args)
   const double readSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  if (modelPath.empty()) std::fprintf(stderr, "building the built-in body model...\n");
   BodyModel ownModel;
-  if (!modelPath.empty())
-    ownModel = readBodyModel(modelPath);
-  else
-    std::fprintf(stderr, "building the built-in body model...\n");
-  const BodyModel& model = modelPath.empty() ? builtinBodyModel() : ownModel;
+  const BodyModel& model = bodyModel(modelPath, ownModel);
 
   const auto fitStart = std::chrono::steady_clock::now();
-  BodyFitResult result;
-  {
-    // Progress in frame equivalents (the fit visits every frame twice, plus the shape).
-    const int total = static_cast<int>(files.size());
-    Progress progress("body-fit", total);
-    result = fitBodySequence(model, frames, fit,
-                             [&](double done)
-                             {
-                               progress.step(static_cast<int>(total * done));
-                               return true;
-                             });
-    progress.finish();
-  }
+  const BodyFitResult result = fitBodiesWithProgress(model, frames, fit);
   const double fitSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - fitStart).count();
 
@@ -191,6 +176,9 @@ int runBodyFit(const Args& args)
          {"landmarks_found", frameFound},
          {"extremities", extremities},
          {"rotations", pose},
+         {"rest_pose_distance", f.status == BodyFitStatus::Ok
+                                    ? nlohmann::json(restPoseDistance(f.pose))
+                                    : nlohmann::json(nullptr)},
          {"translation",
           {f.pose.translation.x(), f.pose.translation.y(), f.pose.translation.z()}}});
     progress.step(k + 1);

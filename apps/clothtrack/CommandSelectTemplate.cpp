@@ -1,5 +1,6 @@
 // clothtrack select-template: the template frame of a sequence and every frame's criteria
 // (also the per-frame topology report of 'clothtrack inspect').
+#include "BodyFitRun.h"
 #include "Commands.h"
 #include "Options.h"
 #include "Progress.h"
@@ -8,20 +9,68 @@
 
 #include <clothtrack/FrameList.h>
 #include <clothtrack/TemplateSelection.h>
+#include <clothtrack/body/BodyFit.h>
 
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 namespace clothtrack::app
 {
 namespace
 {
+/// Each frame's distance from the rest pose (NaN unless its body fit is ok), fitting the body.
+std::vector<double> fitRestPoseDistances(const std::vector<TriangleMesh>& meshes,
+                                         const std::string& modelPath)
+{
+  BodyModel ownModel;
+  const BodyModel& model = bodyModel(modelPath, ownModel);
+  std::vector<const TriangleMesh*> pointers;
+  for (const auto& m : meshes) pointers.push_back(&m);
+  const BodyFitResult fit = fitBodiesWithProgress(model, pointers);
+  std::vector<double> out;
+  for (const BodyFrameFit& f : fit.frames)
+    out.push_back(f.status == BodyFitStatus::Ok ? restPoseDistance(f.pose) : NAN);
+  return out;
+}
+
+/// The same from the body_fit.json of 'clothtrack body-fit', which must list the same frames.
+std::vector<double> readRestPoseDistances(const std::string& path,
+                                          const std::vector<std::string>& frames)
+{
+  std::ifstream in(path);
+  if (!in) throw UsageError{path + ": cannot read file"};
+  try
+  {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    const auto& perFrame = j.at("per_frame");
+    if (perFrame.size() != frames.size())
+      throw UsageError{path + ": " + std::to_string(perFrame.size()) + " frames, the input has " +
+                       std::to_string(frames.size())};
+    std::vector<double> out;
+    for (const auto& f : perFrame)
+    {
+      const auto& d = f.at("rest_pose_distance");
+      out.push_back(d.is_number() ? d.get<double>() : NAN);
+    }
+    return out;
+  }
+  catch (const nlohmann::json::exception& e)
+  {
+    throw UsageError{path + ": not a body_fit.json with rest_pose_distance (" + e.what() + ")"};
+  }
+}
+
 int runFrameTable(const Args& args, bool choose)
 {
   std::string input, csvPath;
   SequenceOptions seq;
   TemplateSelectionOptions selection;
   int forced = -1;
+  std::string criterionName = "rest-pose", modelPath, bodyFitPath;
   const char* name = choose ? "select-template" : "inspect";
   po::options_description options(std::string(name) + " options");
   options.add_options()("input", po::value(&input)->required(),
@@ -33,7 +82,14 @@ int runFrameTable(const Args& args, bool choose)
     options.add_options()("persistence", po::value(&selection.persistence)->default_value(3),
                           "a split counts only if it lasts this many consecutive frames")(
         "template", po::value(&forced)->default_value(-1),
-        "use this frame (-1: choose automatically)");
+        "use this frame (-1: choose automatically)")(
+        "template-criterion", po::value(&criterionName)->default_value(criterionName),
+        "last criterion after the topology: rest-pose (fitted body closest to the rest pose; "
+        "fits the body unless --body-fit is given) or area-ratio (the paper's)")(
+        "body-fit", po::value(&bodyFitPath),
+        "body_fit.json written by 'clothtrack body-fit' for these frames: its poses are used "
+        "instead of fitting the body again")("model", po::value(&modelPath),
+                                             "body model file (default: the built-in model)");
   addSequenceOptions(options, seq);
   po::positional_options_description positional;
   positional.add("input", 1);
@@ -43,6 +99,8 @@ int runFrameTable(const Args& args, bool choose)
     return 0;
   const FrameConventions conventions = toConventions(seq);
   if (selection.persistence < 1) throw UsageError{"--persistence must be at least 1"};
+  if (choose) selection.criterion = parseTemplateCriterion(criterionName);
+  const bool byPose = choose && forced < 0 && selection.criterion == TemplateCriterion::RestPose;
 
   const std::vector<std::string> frames = listFrames(input);
   if (forced >= static_cast<int>(frames.size()))
@@ -50,22 +108,28 @@ int runFrameTable(const Args& args, bool choose)
                      " is out of range: " + std::to_string(frames.size()) + " frames"};
   std::vector<FrameTopology> criteria;
   std::vector<int> vertices, faces;
+  std::vector<TriangleMesh> meshes; // kept only for the body fit
   Progress progress(name, static_cast<int>(frames.size()));
   for (size_t k = 0; k < frames.size(); ++k)
   {
     std::vector<std::string> warnings;
-    const TriangleMesh mesh = loadFrame(frames[k], conventions, &warnings);
+    TriangleMesh mesh = loadFrame(frames[k], conventions, &warnings);
     for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     criteria.push_back(frameTopology(mesh, selection.minimumShellArea));
     vertices.push_back(mesh.numVertices());
     faces.push_back(mesh.numFaces());
+    if (byPose && bodyFitPath.empty()) meshes.push_back(std::move(mesh));
     progress.step(static_cast<int>(k + 1));
   }
   progress.finish();
+  std::vector<double> restPose;
+  if (byPose)
+    restPose = bodyFitPath.empty() ? fitRestPoseDistances(meshes, modelPath)
+                                   : readRestPoseDistances(bodyFitPath, frames);
   TemplateSelection chosen;
   if (choose)
   {
-    chosen = selectTemplate(criteria, selection);
+    chosen = selectTemplate(criteria, selection, restPose);
     if (forced >= 0) chosen.chosen = forced;
   }
 
@@ -77,10 +141,10 @@ int runFrameTable(const Args& args, bool choose)
                  "frame,file,vertices,faces,components,shells,genus_largest,boundaries_largest,"
                  "area_largest_m2,"
                  "area_ratio,non_manifold_edges%s\n",
-                 choose ? ",persistent_shells,candidate,chosen" : "");
+                 choose ? ",persistent_shells,rest_pose_distance,candidate,chosen" : "");
   std::printf("%5s %-24s %8s %8s %5s %6s %5s %5s %8s %10s %4s%s\n", "frame", "file", "verts",
               "faces", "comp", "shells", "genus", "holes", "area", "area_ratio", "nme",
-              choose ? "  persist cand" : "");
+              choose ? "  persist  rest_pose cand" : "");
   for (size_t k = 0; k < frames.size(); ++k)
   {
     const FrameTopology& t = criteria[k];
@@ -89,7 +153,8 @@ int runFrameTable(const Args& args, bool choose)
                 vertices[k], faces[k], t.components, t.shells, t.genus, t.boundaries, t.area,
                 t.areaRatio, t.nonManifoldEdges);
     if (choose)
-      std::printf("  %7d %4s%s", chosen.persistentShells[k], chosen.candidate[k] ? "yes" : "",
+      std::printf("  %7d %10.3f %4s%s", chosen.persistentShells[k],
+                  restPose.empty() ? NAN : restPose[k], chosen.candidate[k] ? "yes" : "",
                   static_cast<int>(k) == chosen.chosen ? "  <- template" : "");
     std::printf("\n");
     if (csv)
@@ -98,16 +163,18 @@ int runFrameTable(const Args& args, bool choose)
                    faces[k], t.components, t.shells, t.genus, t.boundaries, t.area, t.areaRatio,
                    t.nonManifoldEdges);
       if (choose)
-        std::fprintf(csv, ",%d,%d,%d", chosen.persistentShells[k], chosen.candidate[k],
+        std::fprintf(csv, ",%d,%.6f,%d,%d", chosen.persistentShells[k],
+                     restPose.empty() ? NAN : restPose[k], chosen.candidate[k],
                      static_cast<int>(k) == chosen.chosen);
       std::fprintf(csv, "\n");
     }
   }
   if (csv && std::fclose(csv) != 0) throw UsageError{csvPath + ": write error"};
   if (choose)
-    std::printf("template frame: %d (%s)%s\n", chosen.chosen,
+    std::printf("template frame: %d (%s), %s%s\n", chosen.chosen,
                 std::filesystem::path(frames[chosen.chosen]).filename().string().c_str(),
-                forced >= 0 ? ", set by --template" : "");
+                forced >= 0 ? "set by --template" : "chosen by ",
+                forced >= 0 ? "" : templateCriterionName(chosen.decidedBy));
   return 0;
 }
 } // namespace

@@ -56,4 +56,11 @@ clothtrack::FrameConventions toConventions(const SequenceOptions& options)
   if (!(options.fps > 0)) throw UsageError{"--fps must be positive"};
   return c;
 }
+
+clothtrack::TemplateCriterion parseTemplateCriterion(const std::string& name)
+{
+  if (name == "rest-pose") return clothtrack::TemplateCriterion::RestPose;
+  if (name == "area-ratio") return clothtrack::TemplateCriterion::AreaRatio;
+  throw UsageError{"--template-criterion must be rest-pose or area-ratio (got '" + name + "')"};
+}
 } // namespace clothtrack::app

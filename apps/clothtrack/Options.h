@@ -4,6 +4,8 @@
 
 #include "ctMeshConversion.h"
 
+#include <clothtrack/TemplateSelection.h>
+
 #include <boost/program_options.hpp>
 
 #include <string>
@@ -27,4 +29,7 @@ struct SequenceOptions
 void addSequenceOptions(po::options_description& options, SequenceOptions& target);
 /// Checks the values (UsageError when wrong) and converts them to reader conventions.
 clothtrack::FrameConventions toConventions(const SequenceOptions& options);
+
+/// --template-criterion: "rest-pose" or "area-ratio" (UsageError otherwise).
+clothtrack::TemplateCriterion parseTemplateCriterion(const std::string& name);
 } // namespace clothtrack::app

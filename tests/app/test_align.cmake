@@ -15,7 +15,7 @@ expect_run(0 "wrote 6 frames" synth --preset skirt-turn --frames 6 --seed 3 -o $
 expect_run(0 "aligned 6 frames" align ${WORK}/synth/frames --ground-truth ${WORK}/synth/ground_truth
   --markers ${WORK}/synth/markers.csv -o ${WORK}/out)
 foreach (f aligned.pvd aligned/aligned_0000.vtp aligned/aligned_0005.vtp metrics.json work/landmarks.json
-         report.html images/per_frame_error.png images/cumulative_error.png)
+         body_fit.json report.html images/per_frame_error.png images/cumulative_error.png)
   if (NOT EXISTS ${WORK}/out/${f})
     message(FATAL_ERROR "align did not write ${f}")
   endif ()
@@ -23,6 +23,17 @@ endforeach ()
 file(GLOB correspondence_images ${WORK}/out/images/correspondence_*.png)
 if (NOT correspondence_images)
   message(FATAL_ERROR "the report has no correspondence image")
+endif ()
+file(GLOB body_images ${WORK}/out/images/body_*.png)
+list(LENGTH body_images body_image_count)
+file(STRINGS ${WORK}/out/report.html body_links REGEX "images/body_")
+if (body_image_count LESS 3 OR NOT body_links)
+  message(FATAL_ERROR "the report shows ${body_image_count} fitted-body images")
+endif ()
+# The template was chosen by pose: the frame whose fitted body is nearest the rest pose.
+read_metric(criterion template_criterion)
+if (NOT criterion STREQUAL "rest-pose")
+  message(FATAL_ERROR "metrics.json: template_criterion ${criterion}")
 endif ()
 read_metric(frames frames)
 read_metric(template template_frame)
@@ -96,9 +107,9 @@ expect_run(0 "wrote 3 frames" render ${WORK}/staged --movie-only --size 320x320)
 if (NOT EXISTS ${WORK}/staged/movie/movie_0002.png)
   message(FATAL_ERROR "render wrote no movie frames")
 endif ()
-# The ablation without Ec and prediction needs no body fit.
+# The ablation without Ec and prediction needs no body fit when the template is not chosen by pose.
 expect_run(0 "body fit: skipped" align ${WORK}/synth/frames --frames 0:3 -o ${WORK}/icp --no-correspondence
-  --predict-radius 0 --no-report)
+  --predict-radius 0 --template-criterion area-ratio --no-report)
 file(WRITE ${WORK}/bad/markers.csv "frame,time,marker,x,y,z\n0,0,knee,1,2\n")
 expect_run(1 "markers.csv:2: expected frame,time,marker,x,y,z" align ${WORK}/synth/frames -o ${WORK}/x
   --markers ${WORK}/bad/markers.csv)
