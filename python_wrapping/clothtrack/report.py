@@ -4,8 +4,8 @@ usage: python3 -m clothtrack.report OUT   (OUT holds metrics.json and aligned.pv
 display for the renders: 'clothtrack report OUT' starts a virtual one when there is none)
 
 Writes OUT/images/per_frame_error.png, cumulative_error.png, frame_NNNN.png (input frame, template,
-result coloured by error), correspondence_NNNN.png (a colour field on the template carried to the frame)
-and OUT/report.html.
+result coloured by error), correspondence_NNNN.png (a colour field on the template carried to the frame),
+body_NNNN.png (the fitted body inside the frame, from OUT/body_fit.json) and OUT/report.html.
 """
 import html
 import json
@@ -121,18 +121,21 @@ def _render_frame(out, metrics, k, path, error_range):
 
 
 def _save_panels(panels, path, bar=None):
-    """Draws (title, actor) panels side by side, each framed on its own actor (the template frame may
-    be elsewhere in the room), with `bar` in the last one, and writes the PNG."""
+    """Draws (title, actor or list of actors) panels side by side, each framed on its first actor (the
+    template frame may be elsewhere in the room), with `bar` in the last one, and writes the PNG."""
     from vtkmodules.vtkRenderingCore import vtkRenderer, vtkTextActor
 
     from clothtrack.rendering import offscreen_window, save_png
 
     window = offscreen_window(1200, 560)
-    for index, (title, actor) in enumerate(panels):
+    for index, (title, actors) in enumerate(panels):
+        actors = actors if isinstance(actors, (list, tuple)) else [actors]
+        actor = actors[0]
         renderer = vtkRenderer()
         renderer.SetViewport(index / len(panels), 0, (index + 1) / len(panels), 1)
         renderer.SetBackground(1, 1, 1)
-        renderer.AddActor(actor)
+        for each in actors:
+            renderer.AddActor(each)
         text = vtkTextActor()
         text.SetInput(title)
         text.GetTextProperty().SetColor(0, 0, 0)
@@ -207,6 +210,40 @@ def _render_correspondence(out, metrics, k, path):
     _save_panels(panels, path)
 
 
+def _render_body(out, metrics, k, path):
+    """The body fitted under the clothing of frame k (stage 1), alone and inside the translucent
+    frame (paper Figure 2). Returns False when the run has no body fit (OUT/body_fit.json)."""
+    import clothtrack
+    from clothtrack.rendering import colour_actor
+    from clothtrack.sequence import read_sequence
+
+    summary_path = out / "body_fit.json"
+    if not summary_path.is_file():
+        return False
+    summary = json.loads(summary_path.read_text())
+    pose = summary["per_frame"][k]
+    source = clothtrack.ctBodyModelSource()
+    if summary.get("model"):
+        source.SetModelFileName(summary["model"])
+    for index, value in enumerate(summary["beta"]):
+        source.SetShapeCoefficient(index, value)
+    for joint, rotation in enumerate(pose["rotations"]):
+        source.SetJointRotation(joint, *rotation)
+    source.SetTranslation(*pose["translation"])
+    source.Update()
+    body = source.GetOutput()
+    frame = read_sequence(metrics["files"][k], length_unit=metrics["unit"], up_axis=metrics["up"])[0]
+    number = metrics["frame_numbers"][k]
+    skin = (0.93, 0.62, 0.45)
+    panels = [("input frame %d" % number, colour_actor(frame, (0.85, 0.85, 0.85), smooth_normals=True)),
+              ("fitted body (%s)" % pose["status"], colour_actor(body, skin, smooth_normals=True)),
+              ("fitted body inside the frame",
+               [colour_actor(frame, (0.6, 0.7, 0.85), opacity=0.3, smooth_normals=True),
+                colour_actor(body, skin, smooth_normals=True)])]
+    _save_panels(panels, path)
+    return True
+
+
 def _table(rows):
     cells = "".join("<tr><th>%s</th><td>%s</td></tr>" % (html.escape(k), html.escape(v)) for k, v in rows)
     return "<table>%s</table>" % cells
@@ -231,6 +268,9 @@ def write_report(out):
         if k != metrics["template_frame"]:
             name = "correspondence_%04d.png" % metrics["frame_numbers"][k]
             _render_correspondence(out, metrics, k, images / name)
+            renders.append((k, name))
+        name = "body_%04d.png" % metrics["frame_numbers"][k]
+        if _render_body(out, metrics, k, images / name):
             renders.append((k, name))
 
     rows = [("input", metrics["input"]), ("frames", str(metrics["frames"])),
