@@ -73,7 +73,7 @@ def _as_sequence(frames, frame_rate):
 
 
 def align(frames, ground_truth=None, template_frame=None, solver="exact", predict_radius=0.3,
-          shape_frames=8, frame_rate=25.0, progress=None):
+          shape_frames=8, frame_rate=25.0, progress=None, template_criterion="rest-pose"):
     """Aligns a captured sequence: body fit and landmarks, template choice, geodesic-patch
     correspondences, template fit and, with a ground truth, the vertex errors.
 
@@ -81,6 +81,8 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
                     vtkPolyData, or a vtkMultiBlockDataSet with one frame per block
     ground_truth    the same kinds of input: a sequence with one connectivity, same frame count
     template_frame  a frame index to use as the template, or None to choose it automatically
+    template_criterion  the automatic choice's last criterion after the topology: "rest-pose" (the
+                    fitted body closest to the rest pose) or "area-ratio" (the paper's)
     solver          "exact" (sparse Cholesky, the default) or "lbfgs" (the paper's solver)
     predict_radius  width (metres) of the landmark-driven start of each frame; 0 starts each frame
                     from its neighbour's fit unchanged, as the paper does
@@ -92,6 +94,8 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
 
     if solver not in ("exact", "lbfgs"):
         raise ValueError("solver must be 'exact' or 'lbfgs'")
+    if template_criterion not in ("rest-pose", "area-ratio"):
+        raise ValueError("template_criterion must be 'rest-pose' or 'area-ratio'")
     sequence = _as_sequence(frames, frame_rate)
     body = clothtrack.ctBodyFit()
     body.SetInputData(sequence)
@@ -99,6 +103,7 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
     correspondence = clothtrack.ctPatchCorrespondence()
     correspondence.SetInputData(0, sequence)
     correspondence.SetInputConnection(1, body.GetOutputPort(1))
+    correspondence.SetTemplateCriterion(1 if template_criterion == "rest-pose" else 0)
     if template_frame is not None:
         if not 0 <= template_frame < sequence.GetNumberOfBlocks():
             raise ValueError("template_frame %d is not a frame (0..%d)" % (template_frame,
