@@ -10,6 +10,7 @@ import shutil
 import subprocess
 import sys
 
+import paraview.simple as simple
 from paraview.simple import Hide, LoadPlugin, SaveScreenshot
 
 plugin, app, scratch, baselines = sys.argv[1:5]
@@ -78,6 +79,36 @@ for k in range(4):
     within = errors.GetValueByName(k, "Within10cm").ToDouble()
     print("frame %d: mean error %.4f m, within 10 cm %.3f" % (k, mean, within))
     check(mean < 0.04 and within > 0.95, "frame %d: mean %g, within 10 cm %g" % (k, mean, within))
+
+# Template Selection with the body fit chooses by pose, as Patch Correspondence did; without it,
+# by area ratio. Its criteria table lists each frame's distance from the rest pose.
+def template_frame(proxy):
+    """The TemplateFrame field value of a proxy's first output (the first block of a collection)."""
+    data = proxy.GetClientSideObject().GetOutputDataObject(0)
+    if data.IsA("vtkMultiBlockDataSet"):
+        data = data.GetBlock(0)
+    return int(data.GetFieldData().GetArray("TemplateFrame").GetTuple1(0))
+
+
+chosen = template_frame(pipeline["correspondence"])
+selection = simple.ClothTrackTemplateSelection(Input=simple.OutputPort(pipeline["frames"], 1),
+                                               BodyFit=simple.OutputPort(pipeline["body"], 0))
+selection.UpdatePipeline()
+table = selection.GetClientSideObject().GetOutputDataObject(1)
+distances = [table.GetValueByName(k, "RestPoseDistance").ToDouble() for k in range(table.GetNumberOfRows())]
+by_pose = template_frame(selection)
+print("template by pose: frame %d (rest-pose distances %s)" % (by_pose, ["%.2f" % d for d in distances]))
+check(by_pose == chosen, "Template Selection chose %d, Patch Correspondence %d" % (by_pose, chosen))
+candidates = [d for k, d in enumerate(distances) if table.GetValueByName(k, "Candidate").ToInt()]
+check(distances[chosen] == min(candidates), "the chosen frame is not the candidate nearest the rest pose")
+selection.Criterion = "Area ratio"
+selection.UpdatePipeline()
+table = selection.GetClientSideObject().GetOutputDataObject(1)
+ratios = [table.GetValueByName(k, "AreaRatio").ToDouble() for k in range(table.GetNumberOfRows())]
+by_area = template_frame(selection)
+check(ratios[by_area] == min(r for k, r in enumerate(ratios) if table.GetValueByName(k, "Candidate").ToInt()),
+      "with the area ratio, frame %d is not the most uniform candidate" % by_area)
+simple.Delete(selection)
 
 shot = paths[-1]
 baseline = os.path.join(baselines, "plugin_pipeline_aligned.png")
