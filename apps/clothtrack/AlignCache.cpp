@@ -29,7 +29,8 @@ Vec3 vec(const nlohmann::json& j)
 nlohmann::json poseJson(const BodyPose& pose)
 {
   nlohmann::json rotations = nlohmann::json::array();
-  for (int j = 0; j < NumJoints; ++j) rotations.push_back(vec(Vec3(pose.rotations.row(j).transpose())));
+  for (int j = 0; j < NumJoints; ++j)
+    rotations.push_back(vec(Vec3(pose.rotations.row(j).transpose())));
   return {{"rotations", rotations}, {"translation", vec(pose.translation)}};
 }
 
@@ -71,14 +72,14 @@ void writeBodyStage(const std::string& path, const nlohmann::json& key, const Bo
     body["rest_pose_distance"] = finiteOrNull(stage.restPoseDistance[k]);
     bodies.push_back(body);
   }
-  writeTextAtomically(path, nlohmann::json({{"key", key},
-                                            {"beta", std::vector<double>(stage.beta.data(),
-                                                                         stage.beta.data() +
-                                                                             stage.beta.size())},
-                                            {"bodies", bodies},
-                                            {"landmarks", frames}})
-                                    .dump() +
-                                "\n");
+  writeTextAtomically(
+      path, nlohmann::json({{"key", key},
+                            {"beta", std::vector<double>(stage.beta.data(),
+                                                         stage.beta.data() + stage.beta.size())},
+                            {"bodies", bodies},
+                            {"landmarks", frames}})
+                    .dump() +
+                "\n");
 }
 
 void writeBodyFitSummary(const std::string& path, const std::string& modelPath,
@@ -112,7 +113,8 @@ std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::
     if (j.at("key") != key) return std::nullopt;
     BodyStage out;
     const std::vector<double> beta = j.at("beta").get<std::vector<double>>();
-    out.beta = Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
+    out.beta =
+        Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
     for (const auto& body : j.at("bodies"))
     {
       out.poses.push_back(poseFromJson(body));
