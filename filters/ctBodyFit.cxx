@@ -24,8 +24,6 @@
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 
-#include <cmath>
-
 #include <memory>
 
 vtkStandardNewMacro(ctBodyFit);
@@ -156,8 +154,7 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
         for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.rotations(j, c));
       for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.translation[c]);
       fd->AddArray(pose);
-      // Known only for a good fit: a poor or failed one must not choose the template.
-      const double fromRest = f.status == BodyFitStatus::Ok ? restPoseDistance(f.pose) : NAN;
+      const double fromRest = fittedRestPoseDistance(f.status, f.pose);
       addFieldValue(fd, "RestPoseDistance", fromRest);
       addFieldValue(fd, "MedianDistance", f.medianDistance);
       addFieldValue(fd, "InsideFraction", f.insideFraction);

@@ -4,7 +4,10 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkSmartPointer.h>
+
+#include <vector>
 
 namespace clothtrack
 {
@@ -39,6 +42,19 @@ inline double fieldValue(vtkFieldData* data, const char* name, double missing)
 {
   vtkDataArray* array = data ? data->GetArray(name) : nullptr;
   return array && array->GetNumberOfTuples() > 0 ? array->GetTuple1(0) : missing;
+}
+
+/// fieldValue of every block of `blocks`, in block order (`missing` for an empty block).
+inline std::vector<double> blockFieldValues(vtkMultiBlockDataSet* blocks, const char* name,
+                                            double missing)
+{
+  std::vector<double> values;
+  for (unsigned k = 0; k < blocks->GetNumberOfBlocks(); ++k)
+  {
+    vtkDataObject* block = blocks->GetBlock(k);
+    values.push_back(fieldValue(block ? block->GetFieldData() : nullptr, name, missing));
+  }
+  return values;
 }
 } // namespace clothtrack
 

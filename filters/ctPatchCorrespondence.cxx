@@ -115,14 +115,9 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
     if (chosen < 0)
     {
       std::vector<FrameTopology> criteria;
-      std::vector<double> restPose;
-      for (int k = 0; k < n; ++k)
-      {
-        criteria.push_back(frameTopology(frameMesh(sequence, k), 0.1));
-        vtkDataObject* block = landmarkBlocks->GetBlock(static_cast<unsigned>(k));
-        restPose.push_back(
-            fieldValue(block ? block->GetFieldData() : nullptr, "RestPoseDistance", NAN));
-      }
+      for (int k = 0; k < n; ++k) criteria.push_back(frameTopology(frameMesh(sequence, k), 0.1));
+      const std::vector<double> restPose =
+          blockFieldValues(landmarkBlocks, "RestPoseDistance", NAN);
       TemplateSelectionOptions selection;
       selection.criterion = static_cast<clothtrack::TemplateCriterion>(this->TemplateCriterion);
       chosen = selectTemplate(criteria, selection, restPose).chosen;

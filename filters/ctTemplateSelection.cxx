@@ -100,12 +100,7 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
                     << " frames, the sequence " << n);
       return 0;
     }
-    for (int k = 0; k < n; ++k)
-    {
-      vtkDataObject* block = body->GetBlock(static_cast<unsigned>(k));
-      restPose.push_back(
-          fieldValue(block ? block->GetFieldData() : nullptr, "RestPoseDistance", NAN));
-    }
+    restPose = blockFieldValues(body, "RestPoseDistance", NAN);
   }
   TemplateSelectionOptions options;
   options.minimumShellArea = this->MinimumShellArea;

@@ -13,32 +13,13 @@ import sys
 
 import numpy as np
 import clothtrack
-from clothtrack.rendering import offscreen_window, save_png
+from clothtrack.rendering import colour_field_actor, offscreen_window, save_png
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet, vtkPolyData, vtkPointLocator
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
+from vtkmodules.vtkRenderingCore import vtkRenderer
 
 GREY = (170, 170, 170)
-
-
-def coloured_actor(mesh, rgb):
-    data = vtkPolyData()
-    data.ShallowCopy(mesh)
-    colours = numpy_support.numpy_to_vtk(np.ascontiguousarray(rgb, dtype=np.uint8), deep=1)
-    colours.SetName("Colour")
-    data.GetPointData().SetScalars(colours)
-    normals = vtkPolyDataNormals()
-    normals.SplittingOff()
-    normals.SetInputData(data)
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(normals.GetOutputPort())
-    mapper.SetColorModeToDirectScalars()
-    mapper.SetScalarModeToUsePointData()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    return actor
 
 
 def main():
@@ -94,7 +75,7 @@ def main():
         renderer = vtkRenderer()
         renderer.SetViewport(column / columns, 0, (column + 1) / columns, 1)
         renderer.SetBackground(1, 1, 1)
-        renderer.AddActor(coloured_actor(mesh, rgb))
+        renderer.AddActor(colour_field_actor(mesh, rgb))
         camera = renderer.GetActiveCamera()
         bounds = mesh.GetBounds()
         centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,

@@ -1,11 +1,11 @@
 #include "AlignCache.h"
 
+#include "BodyFitRun.h"
 #include "Commands.h"
 #include "TextFile.h"
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -26,31 +26,29 @@ Vec3 vec(const nlohmann::json& j)
 {
   return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
 }
-nlohmann::json poseJson(const BodyPose& pose)
-{
-  nlohmann::json rotations = nlohmann::json::array();
-  for (int j = 0; j < NumJoints; ++j)
-    rotations.push_back(vec(Vec3(pose.rotations.row(j).transpose())));
-  return {{"rotations", rotations}, {"translation", vec(pose.translation)}};
-}
-
-BodyPose poseFromJson(const nlohmann::json& j)
-{
-  BodyPose pose;
-  const auto& rotations = j.at("rotations");
-  if (rotations.size() != NumJoints) throw std::runtime_error("another skeleton");
-  for (int k = 0; k < NumJoints; ++k) pose.rotations.row(k) = vec(rotations.at(k)).transpose();
-  pose.translation = vec(j.at("translation"));
-  return pose;
-}
-
-nlohmann::json finiteOrNull(double d)
-{
-  return std::isfinite(d) ? nlohmann::json(d) : nlohmann::json(nullptr);
-}
 } // namespace
 
-void writeBodyStage(const std::string& path, const nlohmann::json& key, const BodyStage& stage)
+std::vector<double> restPoseDistances(const BodyStage& stage)
+{
+  std::vector<double> out;
+  for (size_t k = 0; k < stage.poses.size(); ++k)
+    out.push_back(fittedRestPoseDistance(stage.status[k], stage.poses[k]));
+  return out;
+}
+
+nlohmann::json bodyFitJson(const std::string& modelPath, const std::vector<std::string>& files,
+                           const BodyStage& stage)
+{
+  nlohmann::json frames = nlohmann::json::array();
+  for (size_t k = 0; k < stage.poses.size(); ++k)
+    frames.push_back(bodyFrameJson(files[k], stage.status[k], stage.poses[k]));
+  return {{"model", modelPath},
+          {"beta", std::vector<double>(stage.beta.data(), stage.beta.data() + stage.beta.size())},
+          {"per_frame", frames}};
+}
+
+void writeBodyStage(const std::string& path, const nlohmann::json& key, const nlohmann::json& body,
+                    const BodyStage& stage)
 {
   nlohmann::json frames = nlohmann::json::array();
   for (const FrameLandmarks& frame : stage.landmarks)
@@ -64,43 +62,8 @@ void writeBodyStage(const std::string& path, const nlohmann::json& key, const Bo
                       {"offset", p.offset}});
     frames.push_back(list);
   }
-  nlohmann::json bodies = nlohmann::json::array();
-  for (size_t k = 0; k < stage.poses.size(); ++k)
-  {
-    nlohmann::json body = poseJson(stage.poses[k]);
-    body["status"] = static_cast<int>(stage.status[k]);
-    body["rest_pose_distance"] = finiteOrNull(stage.restPoseDistance[k]);
-    bodies.push_back(body);
-  }
   writeTextAtomically(
-      path, nlohmann::json({{"key", key},
-                            {"beta", std::vector<double>(stage.beta.data(),
-                                                         stage.beta.data() + stage.beta.size())},
-                            {"bodies", bodies},
-                            {"landmarks", frames}})
-                    .dump() +
-                "\n");
-}
-
-void writeBodyFitSummary(const std::string& path, const std::string& modelPath,
-                         const std::vector<std::string>& files, const BodyStage& stage)
-{
-  nlohmann::json frames = nlohmann::json::array();
-  for (size_t k = 0; k < stage.poses.size(); ++k)
-  {
-    nlohmann::json frame = poseJson(stage.poses[k]);
-    frame["file"] = files[k];
-    frame["status"] = bodyFitStatusName(stage.status[k]);
-    frame["rest_pose_distance"] = finiteOrNull(stage.restPoseDistance[k]);
-    frames.push_back(frame);
-  }
-  writeTextAtomically(
-      path, nlohmann::json({{"model", modelPath},
-                            {"beta", std::vector<double>(stage.beta.data(),
-                                                         stage.beta.data() + stage.beta.size())},
-                            {"per_frame", frames}})
-                    .dump(1) +
-                "\n");
+      path, nlohmann::json({{"key", key}, {"body", body}, {"landmarks", frames}}).dump() + "\n");
 }
 
 std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::json& key)
@@ -112,15 +75,14 @@ std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::
     const nlohmann::json j = nlohmann::json::parse(in);
     if (j.at("key") != key) return std::nullopt;
     BodyStage out;
-    const std::vector<double> beta = j.at("beta").get<std::vector<double>>();
+    const nlohmann::json& body = j.at("body");
+    const std::vector<double> beta = body.at("beta").get<std::vector<double>>();
     out.beta =
         Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
-    for (const auto& body : j.at("bodies"))
+    for (const auto& frame : body.at("per_frame"))
     {
-      out.poses.push_back(poseFromJson(body));
-      out.status.push_back(static_cast<BodyFitStatus>(body.at("status").get<int>()));
-      const auto& d = body.at("rest_pose_distance");
-      out.restPoseDistance.push_back(d.is_number() ? d.get<double>() : NAN);
+      out.poses.push_back(bodyFramePose(frame));
+      out.status.push_back(bodyFrameStatus(frame));
     }
     for (const auto& frame : j.at("landmarks"))
     {

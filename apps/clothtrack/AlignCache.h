@@ -16,25 +16,30 @@ namespace clothtrack::app
 {
 using FrameLandmarks = std::vector<OrientedSurfacePoint>;
 
-/// Stage 1 output: the fitted body (shape, pose and status per frame), the landmarks of every
-/// frame and how far its body is from the rest pose (NaN where the fit is poor or failed), with
-/// the key of the inputs they came from.
+/// Stage 1 output: the fitted body (shape, pose and status per frame) and the landmarks of every
+/// frame. Poses and statuses are empty when the body fit was skipped.
 struct BodyStage
 {
   Eigen::VectorXd beta;
   std::vector<BodyPose> poses;
   std::vector<BodyFitStatus> status;
   std::vector<FrameLandmarks> landmarks;
-  std::vector<double> restPoseDistance;
 };
-void writeBodyStage(const std::string& path, const nlohmann::json& key, const BodyStage& stage);
+
+/// Each frame's fittedRestPoseDistance; empty when the body fit was skipped.
+std::vector<double> restPoseDistances(const BodyStage& stage);
+
+/// The fitted body in the layout of the body_fit.json of 'clothtrack body-fit' (its per-frame
+/// figures apart): model, beta, and per frame the file, status, pose and rest_pose_distance.
+/// OUT/body_fit.json, for the report and for users; the landmark cache holds it too.
+nlohmann::json bodyFitJson(const std::string& modelPath, const std::vector<std::string>& files,
+                           const BodyStage& stage);
+
+/// The body stage with the key of the inputs it came from.
+void writeBodyStage(const std::string& path, const nlohmann::json& key, const nlohmann::json& body,
+                    const BodyStage& stage);
 /// Empty when the file is missing, unreadable or was made with another key.
 std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::json& key);
-
-/// OUT/body_fit.json: the model, beta and every frame's pose and status, in the layout of
-/// 'clothtrack body-fit' (its per-frame figures apart), for the report and for users.
-void writeBodyFitSummary(const std::string& path, const std::string& modelPath,
-                         const std::vector<std::string>& files, const BodyStage& stage);
 
 /// Stage 2 output for one frame: the template vertices' targets.
 void writeTargets(const std::string& path, const std::string& frameFile,

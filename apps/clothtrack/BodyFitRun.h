@@ -3,6 +3,8 @@
 // of a whole sequence with a progress line.
 #include <clothtrack/body/BodyFit.h>
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <vector>
 
@@ -15,4 +17,11 @@ const BodyModel& bodyModel(const std::string& path, BodyModel& storage);
 BodyFitResult fitBodiesWithProgress(const BodyModel& model,
                                     const std::vector<const TriangleMesh*>& frames,
                                     const BodyFitOptions& options = {});
+
+/// One frame of a body_fit.json ('clothtrack body-fit', 'clothtrack align'): file, status name,
+/// joint rotations, translation and rest_pose_distance (null unless the fit is ok).
+nlohmann::json bodyFrameJson(const std::string& file, BodyFitStatus status, const BodyPose& pose);
+/// The status and pose of such a record; throws std::exception when it is not one.
+BodyFitStatus bodyFrameStatus(const nlohmann::json& record);
+BodyPose bodyFramePose(const nlohmann::json& record);
 } // namespace clothtrack::app

@@ -323,7 +323,6 @@ int alignCommand(const Args& args, AlignMode mode)
       {"files", files}, {"model", modelPath}, {"up", seq.up}, {"unit", seq.unit}};
   BodyStage body;
   body.landmarks.resize(n);
-  body.restPoseDistance.assign(n, NAN);
   std::vector<FrameLandmarks>& landmarks = body.landmarks;
   if (!needLandmarks)
     std::fprintf(stderr, "body fit: skipped (no correspondence term, no start prediction, "
@@ -353,17 +352,18 @@ int alignCommand(const Args& args, AlignMode mode)
         0, n,
         [&](int k)
         {
-          if (fitted.frames[k].status == BodyFitStatus::Ok)
-            body.restPoseDistance[k] = restPoseDistance(fitted.frames[k].pose);
           const TriangleMesh posed = model.posed(fitted.beta, fitted.frames[k].pose);
           const SurfaceLocator locator(frames[k]);
           landmarks[k] =
               landmarkSeeds(transferLandmarks(orientedLandmarks(model, posed), frames[k], locator));
         },
         1);
-    writeBodyStage((work / "landmarks.json").string(), landmarkKey, body);
+    writeBodyStage((work / "landmarks.json").string(), landmarkKey,
+                   bodyFitJson(modelPath, files, body), body);
   }
-  if (needLandmarks) writeBodyFitSummary((out / "body_fit.json").string(), modelPath, files, body);
+  if (needLandmarks)
+    writeTextAtomically((out / "body_fit.json").string(),
+                        bodyFitJson(modelPath, files, body).dump(1) + "\n");
   for (int k = 0; k < n; ++k)
     if (landmarks[k].empty())
       std::fprintf(stderr,
@@ -386,7 +386,7 @@ int alignCommand(const Args& args, AlignMode mode)
         0, n, [&](int k) { topology[k] = frameTopology(frames[k], 0.1); }, 1);
     TemplateSelectionOptions selection;
     selection.criterion = criterion;
-    const TemplateSelection chosen = selectTemplate(topology, selection, body.restPoseDistance);
+    const TemplateSelection chosen = selectTemplate(topology, selection, restPoseDistances(body));
     j = chosen.chosen;
     templateDecidedBy = templateCriterionName(chosen.decidedBy);
   }

@@ -161,26 +161,16 @@ int runBodyFit(const Args& args)
 
     nlohmann::json extremities = nlohmann::json::array();
     for (const Vec3& e : f.extremities) extremities.push_back({e.x(), e.y(), e.z()});
-    nlohmann::json pose = nlohmann::json::array();
-    for (int j = 0; j < NumJoints; ++j)
-      pose.push_back({f.pose.rotations(j, 0), f.pose.rotations(j, 1), f.pose.rotations(j, 2)});
-    frameRecords.push_back(
-        {{"file", files[k]},
-         {"status", bodyFitStatusName(f.status)},
-         {"message", f.message},
-         {"median_distance_m", f.medianDistance},
-         {"inside_fraction", inside},
-         {"samples_inside_within_2cm", f.insideFraction},
-         {"extremities_detected", f.extremitiesDetected},
-         {"extremities_matched", f.extremitiesMatched},
-         {"landmarks_found", frameFound},
-         {"extremities", extremities},
-         {"rotations", pose},
-         {"rest_pose_distance", f.status == BodyFitStatus::Ok
-                                    ? nlohmann::json(restPoseDistance(f.pose))
-                                    : nlohmann::json(nullptr)},
-         {"translation",
-          {f.pose.translation.x(), f.pose.translation.y(), f.pose.translation.z()}}});
+    nlohmann::json record = bodyFrameJson(files[k], f.status, f.pose);
+    record.update({{"message", f.message},
+                   {"median_distance_m", f.medianDistance},
+                   {"inside_fraction", inside},
+                   {"samples_inside_within_2cm", f.insideFraction},
+                   {"extremities_detected", f.extremitiesDetected},
+                   {"extremities_matched", f.extremitiesMatched},
+                   {"landmarks_found", frameFound},
+                   {"extremities", extremities}});
+    frameRecords.push_back(record);
     progress.step(k + 1);
   }
   progress.finish();

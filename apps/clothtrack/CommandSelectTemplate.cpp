@@ -32,8 +32,7 @@ std::vector<double> fitRestPoseDistances(const std::vector<TriangleMesh>& meshes
   for (const auto& m : meshes) pointers.push_back(&m);
   const BodyFitResult fit = fitBodiesWithProgress(model, pointers);
   std::vector<double> out;
-  for (const BodyFrameFit& f : fit.frames)
-    out.push_back(f.status == BodyFitStatus::Ok ? restPoseDistance(f.pose) : NAN);
+  for (const BodyFrameFit& f : fit.frames) out.push_back(fittedRestPoseDistance(f.status, f.pose));
   return out;
 }
 

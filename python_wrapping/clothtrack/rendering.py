@@ -46,6 +46,32 @@ def colour_actor(source, colour, opacity=1.0, smooth_normals=False):
     return actor
 
 
+def colour_field_actor(mesh, rgb):
+    """An actor drawing vtkPolyData `mesh` with one RGB colour per vertex (`rgb`: vertices x 3,
+    0-255), smooth-shaded: a colour field such as the correspondence images use."""
+    import numpy as np
+    from vtkmodules.util import numpy_support
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+
+    data = vtkPolyData()
+    data.ShallowCopy(mesh)
+    colours = numpy_support.numpy_to_vtk(np.ascontiguousarray(rgb, dtype=np.uint8), deep=1)
+    colours.SetName("Colour")
+    data.GetPointData().SetScalars(colours)
+    normals = vtkPolyDataNormals()
+    normals.SplittingOff()
+    normals.SetInputData(data)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(normals.GetOutputPort())
+    mapper.SetColorModeToDirectScalars()
+    mapper.SetScalarModeToUsePointData()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    return actor
+
+
 def _connect(algorithm, source):
     if hasattr(source, "GetProducer"):
         algorithm.SetInputConnection(source)

@@ -163,10 +163,9 @@ def _render_correspondence(out, metrics, k, path):
     import numpy as np
     from vtkmodules.util import numpy_support
     from vtkmodules.vtkCommonDataModel import vtkStaticPointLocator
-    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
+    from clothtrack.rendering import colour_field_actor
     from clothtrack.sequence import read_sequence
 
     def aligned_frame(index):
@@ -187,26 +186,10 @@ def _render_correspondence(out, metrics, k, path):
     frame_points = numpy_support.vtk_to_numpy(frame.GetPoints().GetData())
     nearest = np.array([locator.FindClosestPoint(p) for p in frame_points], dtype=np.int64)
 
-    def coloured(mesh, colours):
-        copy = mesh.NewInstance()
-        copy.ShallowCopy(mesh)
-        array = numpy_support.numpy_to_vtk(np.ascontiguousarray(colours), deep=1)
-        array.SetName("Colour")
-        copy.GetPointData().SetScalars(array)
-        normals = vtkPolyDataNormals()
-        normals.SplittingOff()
-        normals.SetInputData(copy)
-        mapper = vtkPolyDataMapper()
-        mapper.SetInputConnection(normals.GetOutputPort())
-        mapper.SetColorModeToDirectScalars()
-        actor = vtkActor()
-        actor.SetMapper(mapper)
-        return actor
-
     number = metrics["frame_numbers"]
-    panels = [("template (frame %d)" % number[j], coloured(template, rgb)),
-              ("aligned template, frame %d" % number[k], coloured(result, rgb)),
-              ("input frame %d, nearest aligned vertex" % number[k], coloured(frame, rgb[nearest]))]
+    panels = [("template (frame %d)" % number[j], colour_field_actor(template, rgb)),
+              ("aligned template, frame %d" % number[k], colour_field_actor(result, rgb)),
+              ("input frame %d, nearest aligned vertex" % number[k], colour_field_actor(frame, rgb[nearest]))]
     _save_panels(panels, path)
 
 

@@ -11,10 +11,17 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 namespace clothtrack
 {
+double fittedRestPoseDistance(BodyFitStatus status, const BodyPose& pose)
+{
+  return status == BodyFitStatus::Ok ? restPoseDistance(pose)
+                                     : std::numeric_limits<double>::quiet_NaN();
+}
+
 const char* bodyFitStatusName(BodyFitStatus status)
 {
   switch (status)

@@ -90,6 +90,10 @@ struct BodyFrameFit
   std::vector<Vec3> extremities; ///< detected on the frame
 };
 
+/// The fitted pose's restPoseDistance when the fit is ok; NaN for a poor or failed fit, whose
+/// pose must not choose the template.
+double fittedRestPoseDistance(BodyFitStatus status, const BodyPose& pose);
+
 struct BodyFitResult
 {
   Eigen::VectorXd beta;
