@@ -165,6 +165,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     options.solver = this->Solver == LBFGS ? FitSolver::LBFGS : FitSolver::Exact;
     options.roundsPerStage = this->RoundsPerStage;
     options.solverTolerance = this->SolverTolerance;
+    options.intermediateTolerance = this->IntermediateTolerance;
     options.nearestEvery = this->NearestEvery;
     options.maxNearestDistance = this->MaximumNearestDistance;
     options.maxNormalAngle = this->MaximumNormalAngle;
@@ -281,6 +282,7 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
        << s[3] << "\n";
   os << indent << "RoundsPerStage: " << this->RoundsPerStage << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
+  os << indent << "IntermediateTolerance: " << this->IntermediateTolerance << "\n";
   os << indent << "NearestEvery: " << this->NearestEvery << "\n";
   os << indent << "MaximumNearestDistance: " << this->MaximumNearestDistance << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";

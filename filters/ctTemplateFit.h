@@ -19,8 +19,9 @@
  * outwards, each started from its neighbour's fit. See clothtrack/TemplateFit.h.
  *
  * Solver 0 (default) solves each round's normal equations to the relative residual
- * SolverTolerance, 1e-4 (sparse Cholesky factors reused as preconditioners); Solver 1 is the
- * paper's L-BFGS, NearestEvery iterations per round.
+ * SolverTolerance, 1e-4, in a stage's last round and IntermediateTolerance, 1e-3, in the others
+ * (block Cholesky factors reused as preconditioners); Solver 1 is the paper's L-BFGS,
+ * NearestEvery iterations per round.
  *
  * Output port 0: vtkMultiBlockDataSet, the aligned template for every frame, with point data
  * Displacement (from the template), CorrespondenceUsed (0/1) and SurfaceDistance (to the
@@ -73,6 +74,8 @@ public:
   /// Exact solver: relative residual at which each round's solve stops.
   vtkSetClampMacro(SolverTolerance, double, 1e-12, 0.5);
   vtkGetMacro(SolverTolerance, double);
+  vtkSetClampMacro(IntermediateTolerance, double, 1e-12, 0.5);
+  vtkGetMacro(IntermediateTolerance, double);
   /// L-BFGS iterations per round (the paper: nearest points every 20 iterations).
   vtkSetClampMacro(NearestEvery, int, 1, 10000);
   vtkGetMacro(NearestEvery, int);
@@ -114,6 +117,7 @@ private:
   std::vector<std::array<double, 4>> Stages;
   int RoundsPerStage = 5;
   double SolverTolerance = 1e-4;
+  double IntermediateTolerance = 1e-3;
   int NearestEvery = 20;
   double MaximumNearestDistance = 0.2;
   double MaximumNormalAngle = 90.0;

@@ -1,5 +1,6 @@
 #include "TemplateFit.h"
 
+#include "BlockCholesky.h"
 #include "Error.h"
 #include "MeshTopology.h"
 #include "MeshValidation.h"
@@ -7,15 +8,19 @@
 #include "PatchCorrespondence.h"
 #include "SurfaceLocator.h"
 
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <deque>
+#include <exception>
+#include <mutex>
+#include <optional>
 #include <string>
+#include <thread>
 
 namespace clothtrack
 {
@@ -24,12 +29,8 @@ namespace
 // Unknowns: X, 4N x 3, rows 4i..4i+3 hold the transposed affine map of vertex i, so that the
 // deformed vertex is X_i^T [t_i; 1]. Its first three rows are the linear part, the fourth the
 // translation; the identity map is [I3; 0].
-using Unknowns = Eigen::Matrix<double, Eigen::Dynamic, 3>;
+using Unknowns = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 using SparseMatrix = Eigen::SparseMatrix<double>;
-// Factors serve as preconditioners only (conjugate gradients run in double precision), so
-// single precision halves their memory and the time of a solve, which reads the whole factor.
-using FactorMatrix = Eigen::SparseMatrix<float>;
-using Cholesky = Eigen::SimplicialLLT<FactorMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>;
 
 Unknowns identityMaps(int n)
 {
@@ -48,59 +49,66 @@ double seconds(std::chrono::steady_clock::time_point since)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-/// Sparse Cholesky factor of a normal matrix, with a solve that runs the three right-hand sides
-/// together (one pass over the factor instead of three).
+/// A factor of the normal equations, kept as a preconditioner.
 struct Factor
 {
-  Cholesky cholesky;
+  BlockCholesky cholesky;
   bool ready = false;
 
-  explicit Factor(const SparseMatrix& pattern) { cholesky.analyzePattern(pattern.cast<float>()); }
+  explicit Factor(const SparseMatrix& pattern) : cholesky(pattern) {}
 
   void factorise(const SparseMatrix& H)
   {
-    cholesky.factorize(H.cast<float>());
-    ready = cholesky.info() == Eigen::Success;
-    if (!ready) throw Error("Template fit: the normal equations are not positive definite.");
+    ready = false;
+    try
+    {
+      cholesky.factorise(H);
+    }
+    catch (const Error&)
+    {
+      throw Error("Template fit: the normal equations are not positive definite.");
+    }
+    ready = true;
   }
 
-  Unknowns solve(const Unknowns& rhs) const
-  {
-    const FactorMatrix& L = cholesky.matrixL().nestedExpression();
-    const Eigen::Index n = rhs.rows();
-    Points y(n, 3);
-    const auto& P = cholesky.permutationP();
-    for (Eigen::Index i = 0; i < n; ++i) y.row(P.indices()[i]) = rhs.row(i);
-    const int* outer = L.outerIndexPtr();
-    const int* inner = L.innerIndexPtr();
-    const float* value = L.valuePtr();
-    // Each column of L starts with its diagonal entry.
-    for (Eigen::Index j = 0; j < n; ++j)
-    {
-      const Eigen::RowVector3d yj = y.row(j) / double(value[outer[j]]);
-      y.row(j) = yj;
-      for (int k = outer[j] + 1; k < outer[j + 1]; ++k) y.row(inner[k]) -= double(value[k]) * yj;
-    }
-    for (Eigen::Index j = n - 1; j >= 0; --j)
-    {
-      Eigen::RowVector3d yj = y.row(j);
-      for (int k = outer[j] + 1; k < outer[j + 1]; ++k) yj -= double(value[k]) * y.row(inner[k]);
-      y.row(j) = yj / double(value[outer[j]]);
-    }
-    Unknowns x(n, 3);
-    for (Eigen::Index i = 0; i < n; ++i) x.row(i) = y.row(P.indices()[i]);
-    return x;
-  }
+  void solve(const Unknowns& rhs, Unknowns& x) const { cholesky.solve(rhs, x); }
 };
 
-/// One round's quadratic: E(X) = tr(X^T H X) - 2 tr(X^T R) + c, H stored as its lower triangle.
+/// One round's quadratic: E(X) = tr(X^T H X) - 2 tr(X^T R) + c, H stored as its lower triangle
+/// for factorisation. H is a 4x4 block per vertex on the diagonal and -edgeWeight I4 per edge, so
+/// products use that structure instead of the sparse matrix.
 struct Quadratic
 {
   SparseMatrix H;
   Unknowns R;
   double c = 0.0;
+  std::vector<Eigen::Matrix4d> diagonal;
+  double edgeWeight = 0.0;
+  const std::vector<int>* neighbourStart = nullptr; // CSR vertex adjacency
+  const std::vector<int>* neighbours = nullptr;
 
-  Unknowns times(const Unknowns& X) const { return H.selfadjointView<Eigen::Lower>() * X; }
+  Unknowns times(const Unknowns& X) const
+  {
+    Unknowns out(X.rows(), 3);
+    times(X, out);
+    return out;
+  }
+  void times(const Unknowns& X, Unknowns& out) const
+  {
+    out.resize(X.rows(), 3);
+    const int n = static_cast<int>(diagonal.size());
+    parallelFor(
+        0, n,
+        [&](int i)
+        {
+          Eigen::Matrix<double, 4, 3> sum = Eigen::Matrix<double, 4, 3>::Zero();
+          for (int k = (*neighbourStart)[i]; k < (*neighbourStart)[i + 1]; ++k)
+            sum += X.middleRows<4>(4 * static_cast<Eigen::Index>((*neighbours)[k]));
+          out.middleRows<4>(4 * static_cast<Eigen::Index>(i)) =
+              diagonal[i] * X.middleRows<4>(4 * static_cast<Eigen::Index>(i)) - edgeWeight * sum;
+        },
+        1024);
+  }
   double energy(const Unknowns& X) const { return dot(X, times(X)) - 2.0 * dot(X, R) + c; }
 };
 
@@ -131,7 +139,8 @@ struct TemplateFitter::Impl
   int n = 0;
   std::vector<std::array<int, 2>> edges;
   std::vector<int> degree;
-  int neighbourCount = 0; // sum of |N(i)|
+  std::vector<int> neighbourStart, neighbours; // CSR adjacency
+  int neighbourCount = 0;                      // sum of |N(i)|
   std::vector<std::array<int, 3>> faces;
   // Storage index in H.valuePtr() of the lower diagonal block entries (10 per vertex) and of
   // the four diagonal entries of each edge's off-diagonal block: H's pattern never changes.
@@ -144,6 +153,7 @@ struct TemplateFitter::Impl
   // reach the new solution in a few steps. A factor is renewed when they need too many.
   // fit() is therefore not reentrant.
   mutable std::vector<std::unique_ptr<Factor>> factors;
+  mutable Unknowns scratch[4];
 
   explicit Impl(const TriangleMesh& mesh)
   {
@@ -153,6 +163,11 @@ struct TemplateFitter::Impl
     degree.assign(n, 0);
     for (const auto& e : edges) ++degree[e[0]], ++degree[e[1]];
     neighbourCount = 2 * static_cast<int>(edges.size());
+    neighbourStart.assign(n + 1, 0);
+    for (int i = 0; i < n; ++i) neighbourStart[i + 1] = neighbourStart[i] + degree[i];
+    neighbours.resize(neighbourCount);
+    std::vector<int> fill(neighbourStart.begin(), neighbourStart.end() - 1);
+    for (const auto& e : edges) neighbours[fill[e[0]]++] = e[1], neighbours[fill[e[1]]++] = e[0];
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(10 * static_cast<size_t>(n) + 4 * edges.size());
     for (int i = 0; i < n; ++i)
@@ -192,18 +207,24 @@ struct TemplateFitter::Impl
     };
     if (!factor || !factor->ready) refactor();
     const double target = tolerance * q.R.norm();
-    Unknowns r = q.R - q.times(X);
-    Unknowns z = factor->solve(r);
-    Unknowns p = z;
+    // Preconditioned conjugate gradients; the vectors are reused (each is a megabyte).
+    Unknowns& r = scratch[0];
+    Unknowns& z = scratch[1];
+    Unknowns& p = scratch[2];
+    Unknowns& Hp = scratch[3];
+    q.times(X, Hp);
+    r.noalias() = q.R - Hp;
+    factor->solve(r, z);
+    p = z;
     double rz = dot(r, z);
     int step = 0;
     for (; step < kMaxSteps && r.norm() > target; ++step)
     {
-      const Unknowns Hp = q.times(p);
+      q.times(p, Hp);
       const double alpha = rz / dot(p, Hp);
-      X += alpha * p;
-      r -= alpha * Hp;
-      z = factor->solve(r);
+      X.noalias() += alpha * p;
+      r.noalias() -= alpha * Hp;
+      factor->solve(r, z);
       const double rzNext = dot(r, z);
       p = z + (rzNext / rz) * p;
       rz = rzNext;
@@ -232,6 +253,10 @@ struct TemplateFitter::Impl
     q.R = Unknowns::Zero(4 * static_cast<Eigen::Index>(n), 3);
     // Each neighbour pair appears twice in sum_i sum_{j in N(i)}, hence the factor 2.
     const double edgeWeight = 2.0 * smoothnessWeight;
+    q.edgeWeight = edgeWeight;
+    q.neighbourStart = &neighbourStart;
+    q.neighbours = &neighbours;
+    q.diagonal.resize(n);
     for (size_t e = 0; e < edges.size(); ++e)
       for (int r = 0; r < 4; ++r) values[edgeSlots[e][r]] = -edgeWeight;
     std::vector<double> constant(n, 0.0);
@@ -260,6 +285,7 @@ struct TemplateFitter::Impl
                     for (int col = 0; col <= r; ++col)
                       values[diagonalSlots[i][k++]] = block(r, col);
                   q.R.middleRows<4>(4 * i) = rhs;
+                  q.diagonal[i] = block;
                   constant[i] = c;
                 });
     for (double c : constant) q.c += c;
@@ -330,8 +356,9 @@ void checkOptions(const TemplateFitOptions& o)
   if (o.roundsPerStage < 1) throw Error("Template fit: roundsPerStage must be at least 1.");
   if (!(o.lengthScale > 0 && std::isfinite(o.lengthScale)))
     throw Error("Template fit: the length scale must be positive.");
-  if (!(o.solverTolerance > 0 && o.solverTolerance < 1))
-    throw Error("Template fit: the solver tolerance must be in (0, 1).");
+  if (!(o.solverTolerance > 0 && o.solverTolerance < 1) ||
+      !(o.intermediateTolerance > 0 && o.intermediateTolerance < 1))
+    throw Error("Template fit: the solver tolerances must be in (0, 1).");
   if (o.nearestEvery < 1) throw Error("Template fit: nearestEvery must be at least 1.");
   if (!(o.maxNearestDistance > 0)) throw Error("Template fit: maxNearestDistance must be > 0.");
   if (!(o.correspondenceOutlier >= 0))
@@ -462,13 +489,16 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
       const Quadratic q =
           m.assemble(b, active, correspondence, wc, hasNearest, nearest, wd, ws, wt);
       if (options_.solver == FitSolver::Exact)
-        result.iterations += m.solveExact(q, X, stageIndex, options_.solverTolerance);
+        result.iterations += m.solveExact(q, X, stageIndex,
+                                          round + 1 == rounds ? options_.solverTolerance
+                                                              : options_.intermediateTolerance);
       else
         result.iterations += minimiseLBFGS(q, X, options_.nearestEvery);
       ++result.rounds;
-      result.energy = q.energy(X);
       const double moved = (positions(X) - before).rowwise().norm().maxCoeff() / scale;
-      if (options_.solver == FitSolver::Exact && moved < options_.convergence) break;
+      const bool converged = options_.solver == FitSolver::Exact && moved < options_.convergence;
+      if (converged || round + 1 == rounds) result.energy = q.energy(X);
+      if (converged) break;
     }
   }
   result.used = active;
@@ -499,28 +529,105 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
   if (templateFrame < 0 || templateFrame >= numFrames)
     throw Error("Template fit: the template frame " + std::to_string(templateFrame) +
                 " is not in the sequence of " + std::to_string(numFrames) + " frames.");
-  const TemplateFitter fitter(templateMesh, options);
   std::vector<FrameFit> fits(numFrames);
   fits[templateFrame].positions = templateMesh.V;
   fits[templateFrame].used.assign(templateMesh.numVertices(), 0);
   fits[templateFrame].surfaceDistance = Eigen::VectorXd::Zero(templateMesh.numVertices());
-  int done = 1;
-  auto step = [&](int k, int from)
+  // The chains j-1 .. 0 and j+1 .. N-1 are independent: with more than one thread they run side
+  // by side, each with its own fitter (a fitter keeps its factorisations). The callbacks are
+  // called one at a time and what they return is copied before the lock is released; progress
+  // is reported from the calling thread only.
+  std::mutex mutex;
+  std::condition_variable changed;
+  bool stop = false;
+  int done = 1, running = 0;
+  std::exception_ptr failure;
+  auto chain = [&](int from, int to, int direction, bool reportProgress)
   {
-    if (progress && !progress(done, numFrames)) throw Error("Template fit: cancelled.");
     try
     {
-      fits[k] = fitter.fit(start ? start(k, from, fits[from].positions) : fits[from].positions,
-                           frame(k), targets(k));
+      const TemplateFitter fitter(templateMesh, options);
+      for (int k = from; k != to; k += direction)
+      {
+        const int previous = k - direction;
+        TriangleMesh frameK;
+        std::optional<VertexTargets> targetsK;
+        Points startK;
+        {
+          std::unique_lock<std::mutex> lock(mutex);
+          if (stop) return;
+          if (reportProgress)
+          {
+            const int reported = done;
+            lock.unlock();
+            if (progress && !progress(reported, numFrames)) throw Error("Template fit: cancelled.");
+            lock.lock();
+          }
+          frameK = frame(k);
+          if (const VertexTargets* t = targets(k)) targetsK = *t;
+          startK = start ? start(k, previous, fits[previous].positions) : fits[previous].positions;
+        }
+        try
+        {
+          fits[k] = fitter.fit(startK, frameK, targetsK ? &*targetsK : nullptr);
+        }
+        catch (const Error& e)
+        {
+          throw Error("Frame " + std::to_string(k) + ": " + e.what());
+        }
+        const std::lock_guard<std::mutex> lock(mutex);
+        ++done;
+        changed.notify_all();
+      }
     }
-    catch (const Error& e)
+    catch (...)
     {
-      throw Error("Frame " + std::to_string(k) + ": " + e.what());
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (!failure) failure = std::current_exception();
+      stop = true;
     }
-    ++done;
   };
-  for (int k = templateFrame - 1; k >= 0; --k) step(k, k + 1);
-  for (int k = templateFrame + 1; k < numFrames; ++k) step(k, k - 1);
+  if (templateFrame > 0 && templateFrame + 1 < numFrames && threadCount() > 1)
+  {
+    auto worker = [&](int from, int to, int direction)
+    {
+      chain(from, to, direction, false);
+      const std::lock_guard<std::mutex> lock(mutex);
+      --running;
+      changed.notify_all();
+    };
+    running = 2;
+    std::thread backward(worker, templateFrame - 1, -1, -1);
+    std::thread forward(worker, templateFrame + 1, numFrames, +1);
+    std::unique_lock<std::mutex> lock(mutex);
+    int reported = -1;
+    while (running > 0)
+    {
+      if (done != reported && !stop)
+      {
+        reported = done;
+        lock.unlock();
+        const bool goOn = !progress || progress(reported, numFrames);
+        lock.lock();
+        if (!goOn && !stop)
+        {
+          failure = std::make_exception_ptr(Error("Template fit: cancelled."));
+          stop = true;
+        }
+        continue;
+      }
+      changed.wait(lock);
+    }
+    lock.unlock();
+    backward.join();
+    forward.join();
+  }
+  else
+  {
+    chain(templateFrame - 1, -1, -1, true);
+    chain(templateFrame + 1, numFrames, +1, true);
+  }
+  if (failure) std::rethrow_exception(failure);
   if (progress) progress(done, numFrames);
   return fits;
 }

@@ -2,6 +2,7 @@
 // correspondences, nearest points alone drift or stop where correspondences do not, frames are
 // fitted from their neighbour, and bad input is refused.
 #include <clothtrack/Error.h>
+#include <clothtrack/Parallel.h>
 #include <clothtrack/Primitives.h>
 #include <clothtrack/TemplateFit.h>
 
@@ -136,7 +137,11 @@ TEST(TemplateFit, SequenceStartsEachFrameFromItsNeighbour)
         return frames[k];
       },
       [](int) -> const VertexTargets* { return nullptr; }, {}, [](int, int) { return true; });
-  EXPECT_EQ(order, (std::vector<int>{1, 0, 3, 4, 5}));
+  // The two chains run side by side; each keeps its order.
+  std::vector<int> backward, forward;
+  for (int k : order) (k < 2 ? backward : forward).push_back(k);
+  EXPECT_EQ(backward, (std::vector<int>{1, 0}));
+  EXPECT_EQ(forward, (std::vector<int>{3, 4, 5}));
   // Nearest points pull onto the surface; along it they converge slowly (the 24 and 36 cm
   // frames are out of reach from the template itself).
   for (int k = 0; k < 6; ++k)
@@ -208,10 +213,51 @@ TEST(TemplateFit, RefusesBadInput)
                    t, 3, 2, [&](int) -> const TriangleMesh& { return t; },
                    [](int) -> const VertexTargets* { return nullptr; }),
                Error);
-  // Cancelling stops the sequence with an error.
-  EXPECT_THROW(fitTemplateSequence(
-                   t, 0, 3, [&](int) -> const TriangleMesh& { return t; },
-                   [](int) -> const VertexTargets* { return nullptr; }, {},
-                   [](int done, int) { return done < 2; }),
-               Error);
+  // Cancelling stops the sequence with an error, with one chain or two.
+  for (int templateFrame : {0, 2})
+    EXPECT_THROW(fitTemplateSequence(
+                     t, templateFrame, 6, [&](int) -> const TriangleMesh& { return t; },
+                     [](int) -> const VertexTargets* { return nullptr; }, {},
+                     [](int done, int) { return done < 2; }),
+                 Error);
+  // A frame that fails names itself, and stops the other chain.
+  const TriangleMesh empty;
+  try
+  {
+    fitTemplateSequence(
+        t, 2, 6, [&](int k) -> const TriangleMesh& { return k == 4 ? empty : t; },
+        [](int) -> const VertexTargets* { return nullptr; });
+    ADD_FAILURE() << "no error";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("Frame 4"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TemplateFit, SideBySideChainsFitAsOneThread)
+{
+  const TriangleMesh t = limb();
+  std::vector<TriangleMesh> frames;
+  std::vector<VertexTargets> targets;
+  for (int k = 0; k < 5; ++k)
+  {
+    frames.push_back(moved(t, 0.2 * (k - 2), Vec3(0.03 * (k - 2), 0.0, 0.01 * k)));
+    targets.push_back(everyNth(frames.back(), 5));
+  }
+  auto run = [&](int threads)
+  {
+    setThreadCount(threads);
+    auto fits = fitTemplateSequence(
+        frames[2], 2, 5, [&](int k) -> const TriangleMesh& { return frames[k]; },
+        [&](int k) -> const VertexTargets* { return &targets[k]; });
+    setThreadCount(0);
+    return fits;
+  };
+  const auto one = run(1), two = run(2);
+  for (int k = 0; k < 5; ++k)
+  {
+    EXPECT_EQ((one[k].positions - two[k].positions).cwiseAbs().maxCoeff(), 0.0) << "frame " << k;
+    EXPECT_LT(meanError(two[k].positions, frames[k].V), 0.01) << "frame " << k;
+  }
 }

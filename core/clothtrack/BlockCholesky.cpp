@@ -1,0 +1,241 @@
+#include "BlockCholesky.h"
+
+#include "Error.h"
+
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCholesky>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+namespace clothtrack
+{
+namespace
+{
+using FactorMatrix = Eigen::SparseMatrix<float>;
+using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
+
+/// Approximate minimum degree on the graph of the 4x4 blocks of `lower`, expanded so that the
+/// four unknowns of a block stay consecutive: the factor is then made of dense 4x4 blocks.
+/// Returns P with P A P^T the reordered matrix.
+Permutation vertexBlockOrdering(const Eigen::SparseMatrix<double>& lower)
+{
+  const Eigen::Index blocks = lower.rows() / 4;
+  std::vector<Eigen::Triplet<float>> entries;
+  entries.reserve(lower.nonZeros() / 4 + 1);
+  for (Eigen::Index c = 0; c < lower.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, c); it; ++it)
+      entries.emplace_back(static_cast<int>(it.row() / 4), static_cast<int>(c / 4), 1.0f);
+  FactorMatrix graph(blocks, blocks);
+  graph.setFromTriplets(entries.begin(), entries.end());
+  Permutation blockInverse;
+  // AMD orders A + A^T, so the lower triangle is enough.
+  Eigen::AMDOrdering<int>()(graph, blockInverse);
+  Permutation inverse(lower.rows());
+  for (Eigen::Index b = 0; b < blocks; ++b)
+    for (int r = 0; r < 4; ++r) inverse.indices()[4 * b + r] = 4 * blockInverse.indices()[b] + r;
+  return inverse.inverse();
+}
+
+// Scalar factorisation of the reordered matrix; its factor is copied into blocks and dropped.
+using Cholesky = Eigen::SimplicialLLT<FactorMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>>;
+using Packet = Eigen::Array4f;
+
+/// Rounds to the nearest bfloat16 (finite values).
+std::uint16_t toBfloat16(float x)
+{
+  std::uint32_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return static_cast<std::uint16_t>((bits + 0x8000u) >> 16);
+}
+
+Packet loadBfloat16(const std::uint16_t* h)
+{
+#if defined(__SSE2__)
+  const __m128i half = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(h));
+  Packet p;
+  _mm_storeu_ps(p.data(), _mm_castsi128_ps(_mm_unpacklo_epi16(_mm_setzero_si128(), half)));
+  return p;
+#else
+  std::uint32_t bits[4] = {std::uint32_t(h[0]) << 16, std::uint32_t(h[1]) << 16,
+                           std::uint32_t(h[2]) << 16, std::uint32_t(h[3]) << 16};
+  Packet p;
+  std::memcpy(p.data(), bits, sizeof bits);
+  return p;
+#endif
+}
+} // namespace
+
+struct BlockCholesky::Impl
+{
+  Permutation permutation;
+  int blocks = 0;
+  // Block column J of L (permuted order): its off-diagonal blocks are slots
+  // columnStart[J] .. columnStart[J+1]-1, in block rows blockRow[slot], values
+  // value[16 slot + 4 k + r] = L(4 I + r, 4 J + k), as a bfloat16 (the upper half of a float):
+  // the solve is limited by reading the factor, and the 8-bit mantissa costs the conjugate
+  // gradients about one step in forty. The diagonal blocks are kept inverted, in float.
+  std::vector<int> columnStart, blockRow;
+  std::vector<std::uint16_t> value;
+  std::vector<float> diagonalInverse; // 16 per block, column-major, lower triangular
+  mutable std::vector<Packet> y;      // solve's scratch
+
+  void buildBlocks(const FactorMatrix& L)
+  {
+    const int* outer = L.outerIndexPtr();
+    const int* inner = L.innerIndexPtr();
+    const float* v = L.valuePtr();
+    columnStart.assign(blocks + 1, 0);
+    blockRow.clear();
+    // The last column of a block column holds every block row below the diagonal block (each
+    // column's pattern passes on to the next through the dense diagonal block).
+    for (int J = 0; J < blocks; ++J)
+    {
+      int previous = -1;
+      for (int k = outer[4 * J + 3] + 1; k < outer[4 * J + 4]; ++k)
+        if (inner[k] / 4 != previous) blockRow.push_back(previous = inner[k] / 4);
+      columnStart[J + 1] = static_cast<int>(blockRow.size());
+    }
+    value.assign(16 * blockRow.size(), 0);
+    diagonalInverse.assign(16 * static_cast<size_t>(blocks), 0.0f);
+    std::vector<int> slotOfRow(blocks, -1);
+    for (int J = 0; J < blocks; ++J)
+    {
+      for (int s = columnStart[J]; s < columnStart[J + 1]; ++s) slotOfRow[blockRow[s]] = s;
+      Eigen::Matrix4d diagonal = Eigen::Matrix4d::Zero();
+      for (int c = 0; c < 4; ++c)
+        for (int k = outer[4 * J + c]; k < outer[4 * J + c + 1]; ++k)
+        {
+          const int I = inner[k] / 4, r = inner[k] % 4;
+          if (I == J)
+            diagonal(r, c) = v[k];
+          else
+          {
+            if (slotOfRow[I] < columnStart[J])
+              throw Error("Block Cholesky: the factor is not made of 4x4 blocks.");
+            value[16 * static_cast<size_t>(slotOfRow[I]) + 4 * c + r] = toBfloat16(v[k]);
+          }
+        }
+      const Eigen::Matrix4d inverse =
+          diagonal.triangularView<Eigen::Lower>().solve(Eigen::Matrix4d::Identity());
+      Eigen::Map<Eigen::Matrix4f> stored(&diagonalInverse[16 * static_cast<size_t>(J)]);
+      stored = inverse.cast<float>();
+    }
+  }
+};
+
+BlockCholesky::BlockCholesky(const Matrix& lower) : impl_(std::make_unique<Impl>())
+{
+  if (lower.rows() != lower.cols() || lower.rows() % 4 != 0)
+    throw Error("Block Cholesky: the matrix is " + std::to_string(lower.rows()) + " x " +
+                std::to_string(lower.cols()) + ", not square with a size divisible by 4.");
+  impl_->blocks = static_cast<int>(lower.rows() / 4);
+  impl_->permutation = vertexBlockOrdering(lower);
+}
+
+BlockCholesky::~BlockCholesky() = default;
+
+void BlockCholesky::factorise(const Matrix& lower)
+{
+  if (lower.rows() != 4 * impl_->blocks || lower.cols() != lower.rows())
+    throw Error("Block Cholesky: the matrix does not have the analysed size.");
+  FactorMatrix reordered(lower.rows(), lower.cols());
+  reordered.selfadjointView<Eigen::Lower>() =
+      lower.cast<float>().selfadjointView<Eigen::Lower>().twistedBy(impl_->permutation);
+  Cholesky cholesky(reordered);
+  if (cholesky.info() != Eigen::Success)
+    throw Error("Block Cholesky: the matrix is not positive definite.");
+  impl_->buildBlocks(cholesky.matrixL().nestedExpression());
+}
+
+Eigen::Index BlockCholesky::blockCount() const
+{
+  return static_cast<Eigen::Index>(impl_->blockRow.size()) + impl_->blocks;
+}
+
+void BlockCholesky::solve(const RightHandSides& rhs, RightHandSides& x) const
+{
+  const Impl& m = *impl_;
+  const int n = 4 * m.blocks;
+  if (rhs.rows() != n) throw Error("Block Cholesky: the right-hand sides do not match the matrix.");
+  const int* permutation = m.permutation.indices().data();
+  // y[3 J + c] holds right-hand side c of the four unknowns of block J (permuted order), so that
+  // a column of a 4x4 block of L multiplies it lane by lane.
+  std::vector<Packet>& y = m.y;
+  y.resize(3 * static_cast<size_t>(m.blocks));
+  for (int i = 0; i < n; ++i)
+  {
+    const int p = permutation[i];
+    for (int c = 0; c < 3; ++c) y[3 * (p / 4) + c][p % 4] = float(rhs(i, c));
+  }
+  // L z = P rhs, block column by block column.
+  for (int J = 0; J < m.blocks; ++J)
+  {
+    const float* d = &m.diagonalInverse[16 * static_cast<size_t>(J)];
+    Packet* yJ = &y[3 * static_cast<size_t>(J)];
+    Packet z[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      const Packet& a = yJ[c];
+      z[c] =
+          Packet(d[0] * a[0], d[1] * a[0] + d[5] * a[1], d[2] * a[0] + d[6] * a[1] + d[10] * a[2],
+                 d[3] * a[0] + d[7] * a[1] + d[11] * a[2] + d[15] * a[3]);
+      yJ[c] = z[c];
+    }
+    Packet zk[4][3]; // each z entry in every lane
+    for (int k = 0; k < 4; ++k)
+      for (int c = 0; c < 3; ++c) zk[k][c] = Packet::Constant(z[c][k]);
+    for (int s = m.columnStart[J]; s < m.columnStart[J + 1]; ++s)
+    {
+      const std::uint16_t* l = &m.value[16 * static_cast<size_t>(s)];
+      const Packet l0 = loadBfloat16(l), l1 = loadBfloat16(l + 4), l2 = loadBfloat16(l + 8),
+                   l3 = loadBfloat16(l + 12);
+      Packet* yI = &y[3 * static_cast<size_t>(m.blockRow[s])];
+      for (int c = 0; c < 3; ++c)
+        yI[c] -= l0 * zk[0][c] + l1 * zk[1][c] + l2 * zk[2][c] + l3 * zk[3][c];
+    }
+  }
+  // L^T x = z, backwards; the sums over a block's rows are taken lane by lane and reduced once
+  // per block column.
+  for (int J = m.blocks - 1; J >= 0; --J)
+  {
+    Packet sum[4][3];
+    for (int k = 0; k < 4; ++k)
+      for (int c = 0; c < 3; ++c) sum[k][c].setZero();
+    for (int s = m.columnStart[J]; s < m.columnStart[J + 1]; ++s)
+    {
+      const std::uint16_t* l = &m.value[16 * static_cast<size_t>(s)];
+      const Packet l0 = loadBfloat16(l), l1 = loadBfloat16(l + 4), l2 = loadBfloat16(l + 8),
+                   l3 = loadBfloat16(l + 12);
+      const Packet* yI = &y[3 * static_cast<size_t>(m.blockRow[s])];
+      for (int c = 0; c < 3; ++c)
+      {
+        sum[0][c] += l0 * yI[c];
+        sum[1][c] += l1 * yI[c];
+        sum[2][c] += l2 * yI[c];
+        sum[3][c] += l3 * yI[c];
+      }
+    }
+    // The transpose of the inverted diagonal block is upper triangular.
+    const float* d = &m.diagonalInverse[16 * static_cast<size_t>(J)];
+    Packet* yJ = &y[3 * static_cast<size_t>(J)];
+    for (int c = 0; c < 3; ++c)
+    {
+      const float a0 = yJ[c][0] - sum[0][c].sum(), a1 = yJ[c][1] - sum[1][c].sum(),
+                  a2 = yJ[c][2] - sum[2][c].sum(), a3 = yJ[c][3] - sum[3][c].sum();
+      yJ[c] = Packet(d[0] * a0 + d[1] * a1 + d[2] * a2 + d[3] * a3,
+                     d[5] * a1 + d[6] * a2 + d[7] * a3, d[10] * a2 + d[11] * a3, d[15] * a3);
+    }
+  }
+  x.resize(n, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    const int p = permutation[i];
+    for (int c = 0; c < 3; ++c) x(i, c) = y[3 * (p / 4) + c][p % 4];
+  }
+}
+} // namespace clothtrack
