@@ -79,7 +79,7 @@ Variant variant(const std::string& name)
 struct Summary
 {
   double mean = 0, p90 = 0, within10 = 0, worstFrame = 0, secondsPerFrame = 0;
-  double roundsPerFrame = 0, stepsPerFrame = 0;
+  double roundsPerFrame = 0, stepsPerFrame = 0, factorisationsPerFrame = 0;
   std::vector<double> perFrame;
 };
 
@@ -95,6 +95,7 @@ Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
     time += fits[k].seconds;
     out.roundsPerFrame += fits[k].rounds;
     out.stepsPerFrame += fits[k].iterations;
+    out.factorisationsPerFrame += fits[k].factorisations;
     double sum = 0;
     int count = 0;
     for (int v = 0; v < fits[k].positions.rows(); ++v)
@@ -120,6 +121,7 @@ Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
   out.secondsPerFrame = time / std::max<size_t>(1, fits.size() - 1);
   out.roundsPerFrame /= std::max<size_t>(1, fits.size() - 1);
   out.stepsPerFrame /= std::max<size_t>(1, fits.size() - 1);
+  out.factorisationsPerFrame /= std::max<size_t>(1, fits.size() - 1);
   return out;
 }
 
@@ -164,8 +166,8 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
   // fit time/frame: one frame's fit; wall/frame: the whole stage over the fitted frames, the two
   // chains (before and after the template frame) side by side.
   std::printf("| variant | mean error | p90 | within 10 cm | worst frame mean | fit time/frame | "
-              "wall/frame | rounds/frame | solver steps/frame |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+              "wall/frame | rounds/frame | solver steps/frame | factorisations/frame |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   std::map<std::string, Summary> results;
   for (const std::string& name : variants)
   {
@@ -202,9 +204,10 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
         predict);
     const double wall = seconds(fitStart) / std::max(1, frames - 1);
     const Summary r = evaluate(s, j, fits);
-    std::printf("| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s | %.3f s | %.1f | %.1f |\n",
-                name.c_str(), 100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame,
-                r.secondsPerFrame, wall, r.roundsPerFrame, r.stepsPerFrame);
+    std::printf(
+        "| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s | %.3f s | %.1f | %.1f | %.2f |\n",
+        name.c_str(), 100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame, r.secondsPerFrame,
+        wall, r.roundsPerFrame, r.stepsPerFrame, r.factorisationsPerFrame);
     std::fflush(stdout);
     results[name] = r;
     if (!curve.empty()) writeCurve(curve, variants, results, frames);
@@ -240,6 +243,8 @@ int main(int argc, char** argv)
         curve = value();
       else if (args[i] == "--tolerance")
         solverTolerance = std::stod(value());
+      else if (args[i] == "--threads")
+        setThreadCount(std::stoi(value()));
       else if (args[i] == "--intermediate-tolerance")
         intermediateTolerance = std::stod(value());
       else if (args[i] == "--convergence")
@@ -279,7 +284,7 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "usage: bench_template_fit samba|remesh DIR | synthetic PRESET FRAMES "
                          "[--stride S] [--frames N] [--variants exact,lbfgs,no-ec,no-ed] "
                          "[--curve FILE] [--tolerance T] [--intermediate-tolerance T] "
-                         "[--convergence M] [--rounds R] [--predict R]\n");
+                         "[--convergence M] [--rounds R] [--predict R] [--threads N]\n");
     return 1;
   }
   catch (const std::exception& e)

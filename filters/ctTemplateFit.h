@@ -19,7 +19,7 @@
  * outwards, each started from its neighbour's fit. See clothtrack/TemplateFit.h.
  *
  * Solver 0 (default) solves each round's normal equations to the relative residual
- * SolverTolerance, 1e-4, in a stage's last round and IntermediateTolerance, 1e-3, in the others
+ * SolverTolerance, 1e-4, in a stage's last round and IntermediateTolerance, 1e-4, in the others
  * (block Cholesky factors reused as preconditioners); Solver 1 is the paper's L-BFGS,
  * NearestEvery iterations per round.
  *
@@ -117,7 +117,7 @@ private:
   std::vector<std::array<double, 4>> Stages;
   int RoundsPerStage = 5;
   double SolverTolerance = 1e-4;
-  double IntermediateTolerance = 1e-3;
+  double IntermediateTolerance = 1e-4;
   int NearestEvery = 20;
   double MaximumNearestDistance = 0.2;
   double MaximumNormalAngle = 90.0;

@@ -198,6 +198,11 @@ int alignCommand(const Args& args, AlignMode mode)
                                 "leave out unreadable frames with a warning instead of stopping")(
       "no-report", po::bool_switch(), "skip the plots, renders and report.html")(
       "solver", po::value(&solver)->default_value(solver), "template fit solver: exact or lbfgs")(
+      "solver-tolerance", po::value(&fit.solverTolerance)->default_value(fit.solverTolerance),
+      "exact solver: relative residual of each stage's last round")(
+      "intermediate-tolerance",
+      po::value(&fit.intermediateTolerance)->default_value(fit.intermediateTolerance),
+      "exact solver: relative residual of the rounds before a stage's last")(
       "stages", po::value(&stageSpec),
       "template fit weight stages wc,ws,wd,wt separated by '/' (default the paper's: "
       "1,400,0,0.1/1,200,10,0.1/0,100,10,0.1/0,50,10,0.1)")(
@@ -244,6 +249,9 @@ int alignCommand(const Args& args, AlignMode mode)
     throw UsageError{"--epsilon and --max-radius must be positive, --min-radius at least 0"};
   if (!(truthDistance > 0)) throw UsageError{"--truth-distance must be positive"};
   if (!(predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
+  if (!(fit.solverTolerance > 0 && fit.solverTolerance < 1) ||
+      !(fit.intermediateTolerance > 0 && fit.intermediateTolerance < 1))
+    throw UsageError{"--solver-tolerance and --intermediate-tolerance must be in (0, 1)"};
   const TemplateCriterion criterion = parseTemplateCriterion(templateCriterion);
   setThreadCount(threads);
   const bool skipBad = values["skip-bad-frames"].as<bool>();
@@ -414,6 +422,7 @@ int alignCommand(const Args& args, AlignMode mode)
   const nlohmann::json runKey = {{"correspondence", correspondenceKey},
                                  {"ground_truth", truthFiles},
                                  {"solver", solver},
+                                 {"tolerances", {fit.solverTolerance, fit.intermediateTolerance}},
                                  {"truth_distance", truthDistance},
                                  {"predict_radius", predictRadius},
                                  {"use_correspondence", fit.useCorrespondence},

@@ -1,6 +1,7 @@
 #include "BlockCholesky.h"
 
 #include "Error.h"
+#include "Parallel.h"
 
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
@@ -8,6 +9,7 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -44,6 +46,11 @@ Permutation vertexBlockOrdering(const Eigen::SparseMatrix<double>& lower)
 // Scalar factorisation of the reordered matrix; its factor is copied into blocks and dropped.
 using Cholesky = Eigen::SimplicialLLT<FactorMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>>;
 using Packet = Eigen::Array4f;
+
+// Parts of the parallel solve. A fixed number, so that the results do not depend on the number
+// of threads (the parts' updates to the top of the tree are summed in a fixed order); two leave
+// about 3 % of the work to the top on a body mesh.
+constexpr int kParts = 2;
 
 /// Rounds to the nearest bfloat16 (finite values).
 std::uint16_t toBfloat16(float x)
@@ -82,7 +89,81 @@ struct BlockCholesky::Impl
   std::vector<int> columnStart, blockRow;
   std::vector<std::uint16_t> value;
   std::vector<float> diagonalInverse; // 16 per block, column-major, lower triangular
-  mutable std::vector<Packet> y;      // solve's scratch
+  // Parallel solve. Subtrees of the elimination tree are independent until their common
+  // ancestors: each part is a set of subtrees, solved on its own thread; the remaining columns
+  // (the top of the tree) are solved alone. In the forward pass a part's updates to top rows go
+  // to its own copy of them (block index blocks + part * topCount + position among the top
+  // rows), summed before the top is solved: forwardTarget[slot] is where each slot's update goes.
+  std::vector<std::vector<int>> partColumns;
+  std::vector<int> topColumns, topPosition, forwardTarget;
+  mutable std::vector<Packet> y; // solve's scratch
+
+  void partition(int parts)
+  {
+    std::vector<int> parent(blocks, -1);
+    std::vector<std::vector<int>> children(blocks);
+    std::vector<double> work(blocks, 0.0);
+    std::vector<int> subtrees;
+    double total = 0;
+    for (int J = 0; J < blocks; ++J)
+    {
+      work[J] += 1 + columnStart[J + 1] - columnStart[J]; // parents come after their children
+      total += 1 + columnStart[J + 1] - columnStart[J];
+      if (columnStart[J + 1] > columnStart[J])
+      {
+        parent[J] = blockRow[columnStart[J]];
+        work[parent[J]] += work[J];
+        children[parent[J]].push_back(J);
+      }
+      else
+        subtrees.push_back(J);
+    }
+    // Split the heaviest subtree until none outweighs a part's share, then deal them out
+    // heaviest first to the lightest part.
+    std::vector<char> top(blocks, 0);
+    while (parts > 1 && !subtrees.empty())
+    {
+      auto heaviest = std::max_element(subtrees.begin(), subtrees.end(),
+                                       [&](int a, int b) { return work[a] < work[b]; });
+      if (work[*heaviest] <= total / parts) break;
+      const int split = *heaviest;
+      subtrees.erase(heaviest);
+      top[split] = 1;
+      subtrees.insert(subtrees.end(), children[split].begin(), children[split].end());
+    }
+    std::sort(subtrees.begin(), subtrees.end(), [&](int a, int b) { return work[a] > work[b]; });
+    std::vector<double> load(parts, 0.0);
+    std::vector<int> part(blocks, -1);
+    for (int root : subtrees)
+    {
+      const int p = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+      load[p] += work[root];
+      part[root] = p;
+    }
+    // Every column not on top belongs to the part of its subtree's root (found from the top
+    // down, as parents come after their children).
+    for (int J = blocks - 1; J >= 0; --J)
+      if (!top[J] && part[J] < 0) part[J] = parent[J] >= 0 ? part[parent[J]] : 0;
+    partColumns.assign(parts, {});
+    topColumns.clear();
+    topPosition.assign(blocks, -1);
+    for (int J = 0; J < blocks; ++J)
+      if (top[J])
+      {
+        topPosition[J] = static_cast<int>(topColumns.size());
+        topColumns.push_back(J);
+      }
+      else
+        partColumns[part[J]].push_back(J);
+    const int topCount = static_cast<int>(topColumns.size());
+    forwardTarget.resize(blockRow.size());
+    for (int J = 0; J < blocks; ++J)
+      for (int s = columnStart[J]; s < columnStart[J + 1]; ++s)
+      {
+        const int I = blockRow[s];
+        forwardTarget[s] = top[J] || !top[I] ? I : blocks + part[J] * topCount + topPosition[I];
+      }
+  }
 
   void buildBlocks(const FactorMatrix& L)
   {
@@ -125,6 +206,7 @@ struct BlockCholesky::Impl
       Eigen::Map<Eigen::Matrix4f> stored(&diagonalInverse[16 * static_cast<size_t>(J)]);
       stored = inverse.cast<float>();
     }
+    partition(kParts);
   }
 };
 
@@ -172,8 +254,12 @@ void BlockCholesky::solve(const RightHandSides& rhs, RightHandSides& x) const
     const int p = permutation[i];
     for (int c = 0; c < 3; ++c) y[3 * (p / 4) + c][p % 4] = float(rhs(i, c));
   }
+  const int parts = static_cast<int>(m.partColumns.size());
+  const size_t topCount = m.topColumns.size();
+  y.resize(3 * (static_cast<size_t>(m.blocks) + parts * topCount));
+  std::fill(y.begin() + 3 * static_cast<size_t>(m.blocks), y.end(), Packet::Zero());
   // L z = P rhs, block column by block column.
-  for (int J = 0; J < m.blocks; ++J)
+  auto forward = [&](int J)
   {
     const float* d = &m.diagonalInverse[16 * static_cast<size_t>(J)];
     Packet* yJ = &y[3 * static_cast<size_t>(J)];
@@ -194,14 +280,14 @@ void BlockCholesky::solve(const RightHandSides& rhs, RightHandSides& x) const
       const std::uint16_t* l = &m.value[16 * static_cast<size_t>(s)];
       const Packet l0 = loadBfloat16(l), l1 = loadBfloat16(l + 4), l2 = loadBfloat16(l + 8),
                    l3 = loadBfloat16(l + 12);
-      Packet* yI = &y[3 * static_cast<size_t>(m.blockRow[s])];
+      Packet* yI = &y[3 * static_cast<size_t>(m.forwardTarget[s])];
       for (int c = 0; c < 3; ++c)
         yI[c] -= l0 * zk[0][c] + l1 * zk[1][c] + l2 * zk[2][c] + l3 * zk[3][c];
     }
-  }
-  // L^T x = z, backwards; the sums over a block's rows are taken lane by lane and reduced once
-  // per block column.
-  for (int J = m.blocks - 1; J >= 0; --J)
+  };
+  // L^T x = z; the sums over a block's rows are taken lane by lane and reduced once per block
+  // column.
+  auto backward = [&](int J)
   {
     Packet sum[4][3];
     for (int k = 0; k < 4; ++k)
@@ -230,7 +316,30 @@ void BlockCholesky::solve(const RightHandSides& rhs, RightHandSides& x) const
       yJ[c] = Packet(d[0] * a0 + d[1] * a1 + d[2] * a2 + d[3] * a3,
                      d[5] * a1 + d[6] * a2 + d[7] * a3, d[10] * a2 + d[11] * a3, d[15] * a3);
     }
+  };
+  parallelFor(
+      0, parts,
+      [&](int p)
+      {
+        for (int J : m.partColumns[p]) forward(J);
+      },
+      1);
+  for (size_t t = 0; t < topCount; ++t)
+  {
+    Packet* yI = &y[3 * static_cast<size_t>(m.topColumns[t])];
+    for (int p = 0; p < parts; ++p)
+      for (int c = 0; c < 3; ++c) yI[c] += y[3 * (m.blocks + p * topCount + t) + c];
   }
+  for (int J : m.topColumns) forward(J);
+  for (auto J = m.topColumns.rbegin(); J != m.topColumns.rend(); ++J) backward(*J);
+  parallelFor(
+      0, parts,
+      [&](int p)
+      {
+        const std::vector<int>& columns = m.partColumns[p];
+        for (auto J = columns.rbegin(); J != columns.rend(); ++J) backward(*J);
+      },
+      1);
   x.resize(n, 3);
   for (int i = 0; i < n; ++i)
   {

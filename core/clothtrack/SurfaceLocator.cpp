@@ -74,6 +74,16 @@ SurfaceLocator::SurfaceLocator(const TriangleMesh& mesh) : mesh_(mesh)
         (mesh.vertex(mesh.F(f, 0)) + mesh.vertex(mesh.F(f, 1)) + mesh.vertex(mesh.F(f, 2))) / 3.0;
   nodes_.reserve(2 * static_cast<size_t>(nf) / 2 + 1);
   if (nf > 0) build(0, nf, centroids);
+  corners_.resize(nf);
+  normals_.resize(nf);
+  for (int i = 0; i < nf; ++i)
+  {
+    for (int k = 0; k < 3; ++k) corners_[i][k] = mesh.vertex(mesh.F(order_[i], k));
+    // Degenerate triangles get a zero normal, which never excludes them.
+    const Vec3 n = (corners_[i][1] - corners_[i][0]).cross(corners_[i][2] - corners_[i][0]);
+    const double length = n.norm();
+    normals_[i] = length > 0 ? Vec3(n / length) : Vec3::Zero();
+  }
 }
 
 int SurfaceLocator::build(int begin, int end, const std::vector<Vec3>& centroids)
@@ -113,12 +123,10 @@ SurfacePoint SurfaceLocator::closestPoint(const Vec3& query, double maxDistance,
   if (nodes_.empty()) return best;
   double best2 = std::isfinite(maxDistance) ? maxDistance * maxDistance
                                             : std::numeric_limits<double>::infinity();
-  auto tryFace = [&](int f)
+  auto tryTriangle = [&](int f, const Vec3& a, const Vec3& b, const Vec3& c)
   {
     Vec3 bary;
-    const Vec3 p =
-        closestPointOnTriangle(query, mesh_.vertex(mesh_.F(f, 0)), mesh_.vertex(mesh_.F(f, 1)),
-                               mesh_.vertex(mesh_.F(f, 2)), bary);
+    const Vec3 p = closestPointOnTriangle(query, a, b, c, bary);
     const double d2 = (p - query).squaredNorm();
     if (d2 <= best2)
     {
@@ -128,34 +136,60 @@ SurfacePoint SurfaceLocator::closestPoint(const Vec3& query, double maxDistance,
       best.position = p;
     }
   };
-  // A good guess bounds the search from the start (queries that move little between calls).
-  if (hintFace >= 0 && hintFace < mesh_.numFaces()) tryFace(hintFace);
-  // Median splits keep the depth below log2(faces) + 1, so a fixed stack suffices.
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0)
+  auto boxDistance2 = [&](const Eigen::AlignedBox3d& box)
   {
-    const Node& node = nodes_[stack[--top]];
-    if (node.box.squaredExteriorDistance(query) > best2) continue;
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double e = std::max({box.min()[k] - query[k], query[k] - box.max()[k], 0.0});
+      d2 += e * e;
+    }
+    return d2;
+  };
+  // A good guess bounds the search from the start (queries that move little between calls).
+  if (hintFace >= 0 && hintFace < mesh_.numFaces())
+    tryTriangle(hintFace, mesh_.vertex(mesh_.F(hintFace, 0)), mesh_.vertex(mesh_.F(hintFace, 1)),
+                mesh_.vertex(mesh_.F(hintFace, 2)));
+  if (boxDistance2(nodes_[0].box) > best2) return best;
+  // Depth first, nearer child first; the farther one waits on the stack with its distance, and
+  // is dropped when the bound has shrunk below it. Median splits keep the depth below
+  // log2(faces) + 1, so a fixed stack suffices.
+  int stack[128];
+  double stackDistance2[128];
+  int top = 0;
+  int current = 0;
+  while (true)
+  {
+    const Node& node = nodes_[current];
     if (node.left < 0)
     {
-      for (int i = node.begin; i < node.end; ++i) tryFace(order_[i]);
-      continue;
-    }
-    // Visit the nearer child first so that the bound tightens early.
-    const double dl = nodes_[node.left].box.squaredExteriorDistance(query);
-    const double dr = nodes_[node.right].box.squaredExteriorDistance(query);
-    if (dl < dr)
-    {
-      stack[top++] = node.right;
-      stack[top++] = node.left;
+      for (int i = node.begin; i < node.end; ++i)
+      {
+        // The triangle's plane is no farther than the triangle: a cheap bound first.
+        const double plane = normals_[i].dot(query - corners_[i][0]);
+        if (plane * plane <= best2)
+          tryTriangle(order_[i], corners_[i][0], corners_[i][1], corners_[i][2]);
+      }
     }
     else
     {
-      stack[top++] = node.left;
-      stack[top++] = node.right;
+      int nearer = node.left, farther = node.right;
+      double dNear = boxDistance2(nodes_[nearer].box), dFar = boxDistance2(nodes_[farther].box);
+      if (dFar < dNear) std::swap(nearer, farther), std::swap(dNear, dFar);
+      if (dNear <= best2)
+      {
+        if (dFar <= best2)
+        {
+          stack[top] = farther;
+          stackDistance2[top++] = dFar;
+        }
+        current = nearer;
+        continue;
+      }
     }
+    while (top > 0 && stackDistance2[top - 1] > best2) --top;
+    if (top == 0) break;
+    current = stack[--top];
   }
   if (best.valid()) best.distance = std::sqrt(best2);
   return best;

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -62,5 +63,7 @@ private:
   const TriangleMesh& mesh_;
   std::vector<Node> nodes_;
   std::vector<int> order_;
+  std::vector<std::array<Vec3, 3>> corners_; // triangle corners in leaf order
+  std::vector<Vec3> normals_;                // their unit normals
 };
 } // namespace clothtrack

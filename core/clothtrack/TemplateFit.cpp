@@ -195,7 +195,7 @@ struct TemplateFitter::Impl
   /// Solves H X = R to the relative residual `tolerance` with the factor of `stage`; returns the
   /// conjugate-gradient steps.
   int solveExact(const Quadratic& q, Unknowns& X, size_t stage, double tolerance,
-                 bool mayRefactor = true) const
+                 int& factorisations, bool mayRefactor = true) const
   {
     constexpr int kMaxSteps = 20;
     if (factors.size() <= stage) factors.resize(stage + 1);
@@ -204,6 +204,7 @@ struct TemplateFitter::Impl
     {
       if (!factor) factor = std::make_unique<Factor>(pattern);
       factor->factorise(q.H);
+      ++factorisations;
     };
     if (!factor || !factor->ready) refactor();
     const double target = tolerance * q.R.norm();
@@ -233,7 +234,7 @@ struct TemplateFitter::Impl
     {
       // Too far from the factored matrix: renew the factor and finish from here.
       refactor();
-      return step + solveExact(q, X, stage, tolerance, false);
+      return step + solveExact(q, X, stage, tolerance, factorisations, false);
     }
     return step;
   }
@@ -491,7 +492,8 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
       if (options_.solver == FitSolver::Exact)
         result.iterations += m.solveExact(q, X, stageIndex,
                                           round + 1 == rounds ? options_.solverTolerance
-                                                              : options_.intermediateTolerance);
+                                                              : options_.intermediateTolerance,
+                                          result.factorisations);
       else
         result.iterations += minimiseLBFGS(q, X, options_.nearestEvery);
       ++result.rounds;
