@@ -136,21 +136,11 @@ SurfacePoint SurfaceLocator::closestPoint(const Vec3& query, double maxDistance,
       best.position = p;
     }
   };
-  auto boxDistance2 = [&](const Eigen::AlignedBox3d& box)
-  {
-    double d2 = 0.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double e = std::max({box.min()[k] - query[k], query[k] - box.max()[k], 0.0});
-      d2 += e * e;
-    }
-    return d2;
-  };
   // A good guess bounds the search from the start (queries that move little between calls).
   if (hintFace >= 0 && hintFace < mesh_.numFaces())
     tryTriangle(hintFace, mesh_.vertex(mesh_.F(hintFace, 0)), mesh_.vertex(mesh_.F(hintFace, 1)),
                 mesh_.vertex(mesh_.F(hintFace, 2)));
-  if (boxDistance2(nodes_[0].box) > best2) return best;
+  if (nodes_[0].box.squaredExteriorDistance(query) > best2) return best;
   // Depth first, nearer child first; the farther one waits on the stack with its distance, and
   // is dropped when the bound has shrunk below it. Median splits keep the depth below
   // log2(faces) + 1, so a fixed stack suffices.
@@ -174,7 +164,8 @@ SurfacePoint SurfaceLocator::closestPoint(const Vec3& query, double maxDistance,
     else
     {
       int nearer = node.left, farther = node.right;
-      double dNear = boxDistance2(nodes_[nearer].box), dFar = boxDistance2(nodes_[farther].box);
+      double dNear = nodes_[nearer].box.squaredExteriorDistance(query),
+             dFar = nodes_[farther].box.squaredExteriorDistance(query);
       if (dFar < dNear) std::swap(nearer, farther), std::swap(dNear, dFar);
       if (dNear <= best2)
       {
@@ -249,8 +240,8 @@ std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec
       // Moller-Trumbore without a range restriction on t; edges are closed (>= 0) so that a
       // line through a shared edge is caught by both sides and deduplicated below.
       const int f = order_[i];
-      const Vec3 a = mesh_.vertex(mesh_.F(f, 0));
-      const Vec3 e1 = mesh_.vertex(mesh_.F(f, 1)) - a, e2 = mesh_.vertex(mesh_.F(f, 2)) - a;
+      const Vec3& a = corners_[i][0];
+      const Vec3 e1 = corners_[i][1] - a, e2 = corners_[i][2] - a;
       const Vec3 pvec = direction.cross(e2);
       const double det = e1.dot(pvec);
       if (std::abs(det) < 1e-300) continue;

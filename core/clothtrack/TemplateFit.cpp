@@ -49,37 +49,11 @@ double seconds(std::chrono::steady_clock::time_point since)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-/// A factor of the normal equations, kept as a preconditioner.
-struct Factor
-{
-  BlockCholesky cholesky;
-  bool ready = false;
-
-  explicit Factor(const SparseMatrix& pattern) : cholesky(pattern) {}
-
-  void factorise(const SparseMatrix& H)
-  {
-    ready = false;
-    try
-    {
-      cholesky.factorise(H);
-    }
-    catch (const Error&)
-    {
-      throw Error("Template fit: the normal equations are not positive definite.");
-    }
-    ready = true;
-  }
-
-  void solve(const Unknowns& rhs, Unknowns& x) const { cholesky.solve(rhs, x); }
-};
-
-/// One round's quadratic: E(X) = tr(X^T H X) - 2 tr(X^T R) + c, H stored as its lower triangle
-/// for factorisation. H is a 4x4 block per vertex on the diagonal and -edgeWeight I4 per edge, so
-/// products use that structure instead of the sparse matrix.
+/// One round's quadratic: E(X) = tr(X^T H X) - 2 tr(X^T R) + c. H is a 4x4 block per vertex on
+/// the diagonal and -edgeWeight I4 per edge; products use that structure, and the sparse matrix
+/// is made only when a factorisation needs it (TemplateFitter::Impl::normalMatrix).
 struct Quadratic
 {
-  SparseMatrix H;
   Unknowns R;
   double c = 0.0;
   std::vector<Eigen::Matrix4d> diagonal;
@@ -142,7 +116,7 @@ struct TemplateFitter::Impl
   std::vector<int> neighbourStart, neighbours; // CSR adjacency
   int neighbourCount = 0;                      // sum of |N(i)|
   std::vector<std::array<int, 3>> faces;
-  // Storage index in H.valuePtr() of the lower diagonal block entries (10 per vertex) and of
+  // Storage index in pattern.valuePtr() of the lower diagonal block entries (10 per vertex) and of
   // the four diagonal entries of each edge's off-diagonal block: H's pattern never changes.
   std::vector<std::array<int, 10>> diagonalSlots;
   std::vector<std::array<int, 4>> edgeSlots;
@@ -152,7 +126,7 @@ struct TemplateFitter::Impl
   // next (the template moved a little), so the old factor preconditions conjugate gradients that
   // reach the new solution in a few steps. A factor is renewed when they need too many.
   // fit() is therefore not reentrant.
-  mutable std::vector<std::unique_ptr<Factor>> factors;
+  mutable std::vector<std::unique_ptr<BlockCholesky>> factors;
   mutable Unknowns scratch[4];
 
   explicit Impl(const TriangleMesh& mesh)
@@ -199,14 +173,22 @@ struct TemplateFitter::Impl
   {
     constexpr int kMaxSteps = 20;
     if (factors.size() <= stage) factors.resize(stage + 1);
-    std::unique_ptr<Factor>& factor = factors[stage];
+    std::unique_ptr<BlockCholesky>& factor = factors[stage];
     auto refactor = [&]()
     {
-      if (!factor) factor = std::make_unique<Factor>(pattern);
-      factor->factorise(q.H);
+      if (!factor) factor = std::make_unique<BlockCholesky>(pattern);
+      try
+      {
+        factor->factorise(normalMatrix(q));
+      }
+      catch (const Error&)
+      {
+        factor.reset(); // the next round starts afresh
+        throw Error("Template fit: the normal equations are not positive definite.");
+      }
       ++factorisations;
     };
-    if (!factor || !factor->ready) refactor();
+    if (!factor) refactor();
     const double target = tolerance * q.R.norm();
     // Preconditioned conjugate gradients; the vectors are reused (each is a megabyte).
     Unknowns& r = scratch[0];
@@ -239,6 +221,22 @@ struct TemplateFitter::Impl
     return step;
   }
 
+  /// H of `q` as a sparse matrix (lower triangle), for factorisation.
+  SparseMatrix normalMatrix(const Quadratic& q) const
+  {
+    SparseMatrix H = pattern;
+    double* values = H.valuePtr();
+    for (size_t e = 0; e < edges.size(); ++e)
+      for (int r = 0; r < 4; ++r) values[edgeSlots[e][r]] = -q.edgeWeight;
+    for (int i = 0; i < n; ++i)
+    {
+      int k = 0;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c <= r; ++c) values[diagonalSlots[i][k++]] = q.diagonal[i](r, c);
+    }
+    return H;
+  }
+
   /// The quadratic of one round. `b` holds [t_i - centroid; 1]; targets are relative to the
   /// centroid too; weights already include the 1/count normalisations.
   Quadratic assemble(const Eigen::Matrix<double, Eigen::Dynamic, 4>& b,
@@ -248,9 +246,6 @@ struct TemplateFitter::Impl
                      double nearestWeight, double smoothnessWeight, double temporalWeight) const
   {
     Quadratic q;
-    q.H = pattern;
-    double* values = q.H.valuePtr();
-    std::fill(values, values + q.H.nonZeros(), 0.0);
     q.R = Unknowns::Zero(4 * static_cast<Eigen::Index>(n), 3);
     // Each neighbour pair appears twice in sum_i sum_{j in N(i)}, hence the factor 2.
     const double edgeWeight = 2.0 * smoothnessWeight;
@@ -258,8 +253,6 @@ struct TemplateFitter::Impl
     q.neighbourStart = &neighbourStart;
     q.neighbours = &neighbours;
     q.diagonal.resize(n);
-    for (size_t e = 0; e < edges.size(); ++e)
-      for (int r = 0; r < 4; ++r) values[edgeSlots[e][r]] = -edgeWeight;
     std::vector<double> constant(n, 0.0);
     parallelFor(0, n,
                 [&](int i)
@@ -281,10 +274,6 @@ struct TemplateFitter::Impl
                     addPoint(correspondenceWeight, correspondence.row(i).transpose());
                   if (nearestWeight > 0 && hasNearest[i])
                     addPoint(nearestWeight, nearest.row(i).transpose());
-                  int k = 0;
-                  for (int r = 0; r < 4; ++r)
-                    for (int col = 0; col <= r; ++col)
-                      values[diagonalSlots[i][k++]] = block(r, col);
                   q.R.middleRows<4>(4 * i) = rhs;
                   q.diagonal[i] = block;
                   constant[i] = c;
