@@ -1,14 +1,12 @@
 #include "BlockCholesky.h"
 
+#include "BlockSolveKernel.h"
 #include "Error.h"
 #include "Parallel.h"
 
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -45,7 +43,6 @@ Permutation vertexBlockOrdering(const Eigen::SparseMatrix<double>& lower)
 
 // Scalar factorisation of the reordered matrix; its factor is copied into blocks and dropped.
 using Cholesky = Eigen::SimplicialLLT<FactorMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>>;
-using Packet = Eigen::Array4f;
 
 // Parts of the parallel solve. A fixed number, so that the results do not depend on the number
 // of threads (the parts' updates to the top of the tree are summed in a fixed order); two leave
@@ -60,26 +57,12 @@ std::uint16_t toBfloat16(float x)
   return static_cast<std::uint16_t>((bits + 0x8000u) >> 16);
 }
 
-Packet loadBfloat16(const std::uint16_t* h)
-{
-#if defined(__SSE2__)
-  const __m128i half = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(h));
-  Packet p;
-  _mm_storeu_ps(p.data(), _mm_castsi128_ps(_mm_unpacklo_epi16(_mm_setzero_si128(), half)));
-  return p;
-#else
-  std::uint32_t bits[4] = {std::uint32_t(h[0]) << 16, std::uint32_t(h[1]) << 16,
-                           std::uint32_t(h[2]) << 16, std::uint32_t(h[3]) << 16};
-  Packet p;
-  std::memcpy(p.data(), bits, sizeof bits);
-  return p;
-#endif
-}
 } // namespace
 
 struct BlockCholesky::Impl
 {
   Permutation permutation;
+  std::vector<int> original; // original[permuted index] = index before the permutation
   int blocks = 0;
   // Block column J of L (permuted order): its off-diagonal blocks are slots
   // columnStart[J] .. columnStart[J+1]-1, in block rows blockRow[slot], values
@@ -96,7 +79,7 @@ struct BlockCholesky::Impl
   // rows), summed before the top is solved: forwardTarget[slot] is where each slot's update goes.
   std::vector<std::vector<int>> partColumns;
   std::vector<int> topColumns, topPosition, forwardTarget;
-  mutable std::vector<Packet> y; // solve's scratch
+  mutable std::vector<blocksolve::Lanes> y; // solve's scratch
 
   void partition(int parts)
   {
@@ -217,6 +200,9 @@ BlockCholesky::BlockCholesky(const Matrix& lower) : impl_(std::make_unique<Impl>
                 std::to_string(lower.cols()) + ", not square with a size divisible by 4.");
   impl_->blocks = static_cast<int>(lower.rows() / 4);
   impl_->permutation = vertexBlockOrdering(lower);
+  impl_->original.resize(lower.rows());
+  for (Eigen::Index i = 0; i < lower.rows(); ++i)
+    impl_->original[impl_->permutation.indices()[i]] = static_cast<int>(i);
 }
 
 BlockCholesky::~BlockCholesky() = default;
@@ -244,107 +230,51 @@ void BlockCholesky::solve(const RightHandSides& rhs, RightHandSides& x) const
   const Impl& m = *impl_;
   const int n = 4 * m.blocks;
   if (rhs.rows() != n) throw Error("Block Cholesky: the right-hand sides do not match the matrix.");
-  const int* permutation = m.permutation.indices().data();
-  // y[3 J + c] holds right-hand side c of the four unknowns of block J (permuted order), so that
-  // a column of a 4x4 block of L multiplies it lane by lane.
-  std::vector<Packet>& y = m.y;
-  y.resize(3 * static_cast<size_t>(m.blocks));
-  for (int i = 0; i < n; ++i)
-  {
-    const int p = permutation[i];
-    for (int c = 0; c < 3; ++c) y[3 * (p / 4) + c][p % 4] = float(rhs(i, c));
-  }
   const int parts = static_cast<int>(m.partColumns.size());
   const size_t topCount = m.topColumns.size();
+  // Entry J of y (three Lanes, one per right-hand side) holds the four unknowns of block J in
+  // permuted order (BlockSolveKernel.h); the parts' copies of the top rows follow, zeroed.
+  std::vector<blocksolve::Lanes>& y = m.y;
   y.resize(3 * (static_cast<size_t>(m.blocks) + parts * topCount));
-  std::fill(y.begin() + 3 * static_cast<size_t>(m.blocks), y.end(), Packet::Zero());
-  // L z = P rhs, block column by block column.
-  auto forward = [&](int J)
-  {
-    const float* d = &m.diagonalInverse[16 * static_cast<size_t>(J)];
-    Packet* yJ = &y[3 * static_cast<size_t>(J)];
-    Packet z[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      const Packet& a = yJ[c];
-      z[c] =
-          Packet(d[0] * a[0], d[1] * a[0] + d[5] * a[1], d[2] * a[0] + d[6] * a[1] + d[10] * a[2],
-                 d[3] * a[0] + d[7] * a[1] + d[11] * a[2] + d[15] * a[3]);
-      yJ[c] = z[c];
-    }
-    Packet zk[4][3]; // each z entry in every lane
-    for (int k = 0; k < 4; ++k)
-      for (int c = 0; c < 3; ++c) zk[k][c] = Packet::Constant(z[c][k]);
-    for (int s = m.columnStart[J]; s < m.columnStart[J + 1]; ++s)
-    {
-      const std::uint16_t* l = &m.value[16 * static_cast<size_t>(s)];
-      const Packet l0 = loadBfloat16(l), l1 = loadBfloat16(l + 4), l2 = loadBfloat16(l + 8),
-                   l3 = loadBfloat16(l + 12);
-      Packet* yI = &y[3 * static_cast<size_t>(m.forwardTarget[s])];
-      for (int c = 0; c < 3; ++c)
-        yI[c] -= l0 * zk[0][c] + l1 * zk[1][c] + l2 * zk[2][c] + l3 * zk[3][c];
-    }
-  };
-  // L^T x = z; the sums over a block's rows are taken lane by lane and reduced once per block
-  // column.
-  auto backward = [&](int J)
-  {
-    Packet sum[4][3];
-    for (int k = 0; k < 4; ++k)
-      for (int c = 0; c < 3; ++c) sum[k][c].setZero();
-    for (int s = m.columnStart[J]; s < m.columnStart[J + 1]; ++s)
-    {
-      const std::uint16_t* l = &m.value[16 * static_cast<size_t>(s)];
-      const Packet l0 = loadBfloat16(l), l1 = loadBfloat16(l + 4), l2 = loadBfloat16(l + 8),
-                   l3 = loadBfloat16(l + 12);
-      const Packet* yI = &y[3 * static_cast<size_t>(m.blockRow[s])];
-      for (int c = 0; c < 3; ++c)
-      {
-        sum[0][c] += l0 * yI[c];
-        sum[1][c] += l1 * yI[c];
-        sum[2][c] += l2 * yI[c];
-        sum[3][c] += l3 * yI[c];
-      }
-    }
-    // The transpose of the inverted diagonal block is upper triangular.
-    const float* d = &m.diagonalInverse[16 * static_cast<size_t>(J)];
-    Packet* yJ = &y[3 * static_cast<size_t>(J)];
-    for (int c = 0; c < 3; ++c)
-    {
-      const float a0 = yJ[c][0] - sum[0][c].sum(), a1 = yJ[c][1] - sum[1][c].sum(),
-                  a2 = yJ[c][2] - sum[2][c].sum(), a3 = yJ[c][3] - sum[3][c].sum();
-      yJ[c] = Packet(d[0] * a0 + d[1] * a1 + d[2] * a2 + d[3] * a3,
-                     d[5] * a1 + d[6] * a2 + d[7] * a3, d[10] * a2 + d[11] * a3, d[15] * a3);
-    }
-  };
+  const int* original = m.original.data();
   parallelFor(
-      0, parts,
-      [&](int p)
+      0, m.blocks,
+      [&](int J)
       {
-        for (int J : m.partColumns[p]) forward(J);
+        for (int c = 0; c < 3; ++c)
+        {
+          float* lanes = y[3 * static_cast<size_t>(J) + c].v;
+          for (int r = 0; r < 4; ++r)
+            lanes[r] = float(rhs(original[4 * J + r], c)), lanes[r + 4] = 0;
+        }
       },
-      1);
+      1024);
+  std::fill(y.begin() + 3 * static_cast<size_t>(m.blocks), y.end(), blocksolve::Lanes{});
+  const blocksolve::Factor factor{m.columnStart.data(), m.blockRow.data(), m.forwardTarget.data(),
+                                  m.value.data(), m.diagonalInverse.data()};
+  const blocksolve::Kernel& kernel = blocksolve::bestKernel();
+  auto run = [&](blocksolve::Pass pass, const std::vector<int>& columns)
+  { pass(factor, columns.data(), static_cast<int>(columns.size()), y.data()); };
+  parallelFor(
+      0, parts, [&](int p) { run(kernel.forward, m.partColumns[p]); }, 1);
   for (size_t t = 0; t < topCount; ++t)
-  {
-    Packet* yI = &y[3 * static_cast<size_t>(m.topColumns[t])];
     for (int p = 0; p < parts; ++p)
-      for (int c = 0; c < 3; ++c) yI[c] += y[3 * (m.blocks + p * topCount + t) + c];
-  }
-  for (int J : m.topColumns) forward(J);
-  for (auto J = m.topColumns.rbegin(); J != m.topColumns.rend(); ++J) backward(*J);
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 8; ++k)
+          y[3 * m.topColumns[t] + c].v[k] += y[3 * (m.blocks + p * topCount + t) + c].v[k];
+  run(kernel.forward, m.topColumns);
+  run(kernel.backward, m.topColumns);
   parallelFor(
-      0, parts,
-      [&](int p)
-      {
-        const std::vector<int>& columns = m.partColumns[p];
-        for (auto J = columns.rbegin(); J != columns.rend(); ++J) backward(*J);
-      },
-      1);
+      0, parts, [&](int p) { run(kernel.backward, m.partColumns[p]); }, 1);
   x.resize(n, 3);
-  for (int i = 0; i < n; ++i)
-  {
-    const int p = permutation[i];
-    for (int c = 0; c < 3; ++c) x(i, c) = y[3 * (p / 4) + c][p % 4];
-  }
+  parallelFor(
+      0, m.blocks,
+      [&](int J)
+      {
+        for (int c = 0; c < 3; ++c)
+          for (int r = 0; r < 4; ++r)
+            x(original[4 * J + r], c) = y[3 * static_cast<size_t>(J) + c].v[r];
+      },
+      1024);
 }
 } // namespace clothtrack
