@@ -2,15 +2,23 @@
 // A minimal parallel loop over an index range for the VTK-free core (the VTK layer uses
 // vtkSMPTools). Iterations must be independent; they are split into one contiguous chunk per
 // thread, so results that depend only on the index are the same for any thread count.
+// The chunks run on a pool of threads started once: the solvers run loops of a millisecond or
+// less, for which starting threads would cost as much as the loop. A loop started while the
+// pool is busy (inside another loop, or from a second thread) runs in its caller alone.
 #include <algorithm>
-#include <thread>
-#include <vector>
+#include <functional>
 
 namespace clothtrack
 {
 /// Threads used by parallelFor: 0 means one per hardware thread.
 void setThreadCount(int count);
 int threadCount();
+
+namespace detail
+{
+/// chunk(0) .. chunk(chunks - 1), on the pool when it is free, else one after the other.
+void runChunks(int chunks, const std::function<void(int)>& chunk);
+} // namespace detail
 
 template <class Body> void parallelFor(int begin, int end, const Body& body, int minChunk = 64)
 {
@@ -21,16 +29,14 @@ template <class Body> void parallelFor(int begin, int end, const Body& body, int
     for (int i = begin; i < end; ++i) body(i);
     return;
   }
-  std::vector<std::thread> workers;
-  workers.reserve(threads - 1);
-  auto chunk = [&](int t)
-  {
-    const int from = begin + static_cast<int>(static_cast<long long>(n) * t / threads);
-    const int to = begin + static_cast<int>(static_cast<long long>(n) * (t + 1) / threads);
-    for (int i = from; i < to; ++i) body(i);
-  };
-  for (int t = 1; t < threads; ++t) workers.emplace_back(chunk, t);
-  chunk(0);
-  for (auto& w : workers) w.join();
+  detail::runChunks(threads,
+                    [&](int t)
+                    {
+                      const int from =
+                          begin + static_cast<int>(static_cast<long long>(n) * t / threads);
+                      const int to =
+                          begin + static_cast<int>(static_cast<long long>(n) * (t + 1) / threads);
+                      for (int i = from; i < to; ++i) body(i);
+                    });
 }
 } // namespace clothtrack
