@@ -44,6 +44,32 @@ double dot(const Unknowns& a, const Unknowns& b)
   return (a.array() * b.array()).sum();
 }
 
+/// Runs body(from, to, k) over a fixed split of [0, size) into kSpans spans, in parallel; sums
+/// taken span by span and added in order do not depend on the thread count.
+constexpr int kSpans = 16;
+template <class Body> void forSpans(Eigen::Index size, const Body& body)
+{
+  parallelFor(
+      0, kSpans, [&](int k) { body(size * k / kSpans, size * (k + 1) / kSpans, k); }, 1);
+}
+
+/// a . b, in parallel.
+double parallelDot(const Unknowns& a, const Unknowns& b)
+{
+  double partial[kSpans];
+  const double* x = a.data();
+  const double* y = b.data();
+  forSpans(a.size(),
+           [&](Eigen::Index from, Eigen::Index to, int k)
+           {
+             partial[k] = Eigen::Map<const Eigen::VectorXd>(x + from, to - from)
+                              .dot(Eigen::Map<const Eigen::VectorXd>(y + from, to - from));
+           });
+  double sum = 0;
+  for (double p : partial) sum += p;
+  return sum;
+}
+
 double seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
@@ -199,20 +225,43 @@ struct TemplateFitter::Impl
     r.noalias() = q.R - Hp;
     factor->solve(r, z);
     p = z;
-    double rz = dot(r, z);
+    double rz = parallelDot(r, z);
+    double rr = parallelDot(r, r);
+    const Eigen::Index size = X.size();
+    using Span = Eigen::Map<Eigen::VectorXd>;
     int step = 0;
-    for (; step < kMaxSteps && r.norm() > target; ++step)
+    for (; step < kMaxSteps && std::sqrt(rr) > target; ++step)
     {
       q.times(p, Hp);
-      const double alpha = rz / dot(p, Hp);
-      X.noalias() += alpha * p;
-      r.noalias() -= alpha * Hp;
+      const double alpha = rz / parallelDot(p, Hp);
+      forSpans(size,
+               [&](Eigen::Index from, Eigen::Index to, int)
+               {
+                 Span(X.data() + from, to - from) += alpha * Span(p.data() + from, to - from);
+                 Span(r.data() + from, to - from) -= alpha * Span(Hp.data() + from, to - from);
+               });
       factor->solve(r, z);
-      const double rzNext = dot(r, z);
-      p = z + (rzNext / rz) * p;
+      double partialRz[kSpans], partialRr[kSpans];
+      forSpans(size,
+               [&](Eigen::Index from, Eigen::Index to, int k)
+               {
+                 const Span rk(r.data() + from, to - from);
+                 partialRz[k] = rk.dot(Span(z.data() + from, to - from));
+                 partialRr[k] = rk.squaredNorm();
+               });
+      double rzNext = 0;
+      rr = 0;
+      for (int k = 0; k < kSpans; ++k) rzNext += partialRz[k], rr += partialRr[k];
+      const double beta = rzNext / rz;
+      forSpans(size,
+               [&](Eigen::Index from, Eigen::Index to, int)
+               {
+                 Span pk(p.data() + from, to - from);
+                 pk = Span(z.data() + from, to - from) + beta * pk;
+               });
       rz = rzNext;
     }
-    if (r.norm() > target && mayRefactor)
+    if (std::sqrt(rr) > target && mayRefactor)
     {
       // Too far from the factored matrix: renew the factor and finish from here.
       refactor();

@@ -1,5 +1,7 @@
 #include "TriangleMesh.h"
 
+#include "Parallel.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -21,34 +23,43 @@ Eigen::VectorXd faceAreas(const TriangleMesh& mesh)
 Points faceNormals(const TriangleMesh& mesh)
 {
   Points normals(mesh.numFaces(), 3);
-  for (int f = 0; f < mesh.numFaces(); ++f)
-  {
-    const Vec3 a = mesh.vertex(mesh.F(f, 0));
-    const Vec3 n = (mesh.vertex(mesh.F(f, 1)) - a).cross(mesh.vertex(mesh.F(f, 2)) - a);
-    const double len = n.norm();
-    normals.row(f) = (len > 0 ? Vec3(n / len) : Vec3::Zero()).transpose();
-  }
+  parallelFor(
+      0, mesh.numFaces(),
+      [&](int f)
+      {
+        const Vec3 a = mesh.vertex(mesh.F(f, 0));
+        const Vec3 n = (mesh.vertex(mesh.F(f, 1)) - a).cross(mesh.vertex(mesh.F(f, 2)) - a);
+        const double len = n.norm();
+        normals.row(f) = (len > 0 ? Vec3(n / len) : Vec3::Zero()).transpose();
+      },
+      4096);
   return normals;
 }
 
 Points vertexNormals(const TriangleMesh& mesh)
 {
   // Angle weights make the normal independent of how a fan is triangulated.
-  Points normals = Points::Zero(mesh.numVertices(), 3);
+  // The corner angles (the costly part) in parallel, then the sums in face order.
   const Points fn = faceNormals(mesh);
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> angles(mesh.numFaces(), 3);
+  parallelFor(
+      0, mesh.numFaces(),
+      [&](int f)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const int i = mesh.F(f, k);
+          const Vec3 e1 = mesh.vertex(mesh.F(f, (k + 1) % 3)) - mesh.vertex(i);
+          const Vec3 e2 = mesh.vertex(mesh.F(f, (k + 2) % 3)) - mesh.vertex(i);
+          const double denom = e1.norm() * e2.norm();
+          angles(f, k) = denom > 0 ? std::acos(std::clamp(e1.dot(e2) / denom, -1.0, 1.0)) : 0.0;
+        }
+      },
+      2048);
+  Points normals = Points::Zero(mesh.numVertices(), 3);
   for (int f = 0; f < mesh.numFaces(); ++f)
-  {
     for (int k = 0; k < 3; ++k)
-    {
-      const int i = mesh.F(f, k);
-      const Vec3 e1 = mesh.vertex(mesh.F(f, (k + 1) % 3)) - mesh.vertex(i);
-      const Vec3 e2 = mesh.vertex(mesh.F(f, (k + 2) % 3)) - mesh.vertex(i);
-      const double denom = e1.norm() * e2.norm();
-      if (denom <= 0) continue;
-      const double angle = std::acos(std::clamp(e1.dot(e2) / denom, -1.0, 1.0));
-      normals.row(i) += angle * fn.row(f);
-    }
-  }
+      if (angles(f, k) != 0) normals.row(mesh.F(f, k)) += angles(f, k) * fn.row(f);
   for (int i = 0; i < mesh.numVertices(); ++i)
   {
     const double len = normals.row(i).norm();
