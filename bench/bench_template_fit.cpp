@@ -6,7 +6,8 @@
 //   bench_template_fit remesh DIR [options]       re-meshed by the capture simulator (truth through
 //                                                 each template vertex's source point)
 //   bench_template_fit synthetic PRESET FRAMES [options]
-// options: --stride S, --frames N (first N after the stride), --variants LIST (comma separated,
+// options: --stride S, --frames N (first N after the stride), --template K (template frame K
+// instead of the automatic choice; 0 fits one chain), --variants LIST (comma separated,
 // of exact, lbfgs, no-ec, no-ed, lbfgs-no-ec, true-ec (the matched vertices pointing at their
 // true positions: stage 3 alone); default exact), --rounds R (nearest-point rounds per
 // stage), --stages "wc,ws,wd,wt;..." (weights of each stage), --outlier D (correspondences further
@@ -143,9 +144,12 @@ void writeCurve(const std::string& path, const std::vector<std::string>& variant
   }
 }
 
-int run(Sequence& s, const std::vector<std::string>& variants, const std::string& curve)
+int run(Sequence& s, const std::vector<std::string>& variants, const std::string& curve,
+        int forcedTemplate)
 {
-  const int j = chooseTemplate(s);
+  if (forcedTemplate >= static_cast<int>(s.captures.size()))
+    throw Error("--template " + std::to_string(forcedTemplate) + " is past the last frame");
+  const int j = forcedTemplate >= 0 ? forcedTemplate : chooseTemplate(s);
   const TriangleMesh& templ = s.captures[j];
   std::printf("template frame %d: %d vertices, %d faces; %d threads\n", j, templ.numVertices(),
               templ.numFaces(), threadCount());
@@ -222,7 +226,7 @@ int main(int argc, char** argv)
   try
   {
     std::vector<std::string> args(argv + 1, argv + argc);
-    int stride = 1, maxFrames = 0;
+    int stride = 1, maxFrames = 0, forcedTemplate = -1;
     std::vector<std::string> variants = {"exact"};
     std::string curve;
     std::vector<std::string> positional;
@@ -235,6 +239,8 @@ int main(int argc, char** argv)
       };
       if (args[i] == "--stride")
         stride = std::max(1, std::stoi(value()));
+      else if (args[i] == "--template")
+        forcedTemplate = std::stoi(value());
       else if (args[i] == "--frames")
         maxFrames = std::stoi(value());
       else if (args[i] == "--variants")
@@ -274,15 +280,15 @@ int main(int argc, char** argv)
     if ((mode == "samba" || mode == "remesh") && positional.size() == 2)
     {
       Sequence s = directorySequence(positional[1], stride, maxFrames, mode == "remesh");
-      return run(s, variants, curve);
+      return run(s, variants, curve, forcedTemplate);
     }
     if (mode == "synthetic" && positional.size() == 3)
     {
       Sequence s = syntheticSequence(positional[1], std::stoi(positional[2]), false);
-      return run(s, variants, curve);
+      return run(s, variants, curve, forcedTemplate);
     }
     std::fprintf(stderr, "usage: bench_template_fit samba|remesh DIR | synthetic PRESET FRAMES "
-                         "[--stride S] [--frames N] [--variants exact,lbfgs,no-ec,no-ed] "
+                         "[--stride S] [--frames N] [--template K] [--variants exact,lbfgs,no-ec,no-ed] "
                          "[--curve FILE] [--tolerance T] [--intermediate-tolerance T] "
                          "[--convergence M] [--rounds R] [--predict R] [--threads N]\n");
     return 1;
