@@ -287,10 +287,11 @@ int main(int argc, char** argv)
       Sequence s = syntheticSequence(positional[1], std::stoi(positional[2]), false);
       return run(s, variants, curve, forcedTemplate);
     }
-    std::fprintf(stderr, "usage: bench_template_fit samba|remesh DIR | synthetic PRESET FRAMES "
-                         "[--stride S] [--frames N] [--template K] [--variants exact,lbfgs,no-ec,no-ed] "
-                         "[--curve FILE] [--tolerance T] [--intermediate-tolerance T] "
-                         "[--convergence M] [--rounds R] [--predict R] [--threads N]\n");
+    std::fprintf(stderr,
+                 "usage: bench_template_fit samba|remesh DIR | synthetic PRESET FRAMES "
+                 "[--stride S] [--frames N] [--template K] [--variants exact,lbfgs,no-ec,no-ed] "
+                 "[--curve FILE] [--tolerance T] [--intermediate-tolerance T] "
+                 "[--convergence M] [--rounds R] [--predict R] [--threads N]\n");
     return 1;
   }
   catch (const std::exception& e)
