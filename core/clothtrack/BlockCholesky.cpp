@@ -4,8 +4,8 @@
 #include "Error.h"
 #include "Parallel.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/OrderingMethods>
-#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <cstdint>
@@ -40,9 +40,6 @@ Permutation vertexBlockOrdering(const Eigen::SparseMatrix<double>& lower)
     for (int r = 0; r < 4; ++r) inverse.indices()[4 * b + r] = 4 * blockInverse.indices()[b] + r;
   return inverse.inverse();
 }
-
-// Scalar factorisation of the reordered matrix; its factor is copied into blocks and dropped.
-using Cholesky = Eigen::SimplicialLLT<FactorMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>>;
 
 // Parts of the parallel solve. A fixed number, so that the results do not depend on the number
 // of threads (the parts' updates to the top of the tree are summed in a fixed order); two leave
@@ -148,48 +145,98 @@ struct BlockCholesky::Impl
       }
   }
 
-  void buildBlocks(const FactorMatrix& L)
+  // Row J of L: the columns K < J with a block L_JK (ascending), and that block's slot.
+  std::vector<int> rowStart, rowColumn, rowSlot;
+  std::vector<float> work; // L in float during a factorisation, slot layout as `value`
+  std::vector<float> diagonal;
+
+  /// The block pattern of L from the block graph of the permuted matrix (lowerNeighbours[I]: the
+  /// blocks J < I coupled to I), by walking the elimination tree from each coupling (Liu).
+  void analyse(const std::vector<std::vector<int>>& lowerNeighbours)
   {
-    const int* outer = L.outerIndexPtr();
-    const int* inner = L.innerIndexPtr();
-    const float* v = L.valuePtr();
-    columnStart.assign(blocks + 1, 0);
-    blockRow.clear();
-    // The last column of a block column holds every block row below the diagonal block (each
-    // column's pattern passes on to the next through the dense diagonal block).
-    for (int J = 0; J < blocks; ++J)
+    std::vector<int> parent(blocks, -1), mark(blocks, -1);
+    std::vector<std::vector<int>> columnRows(blocks);
+    for (int I = 0; I < blocks; ++I)
     {
-      int previous = -1;
-      for (int k = outer[4 * J + 3] + 1; k < outer[4 * J + 4]; ++k)
-        if (inner[k] / 4 != previous) blockRow.push_back(previous = inner[k] / 4);
-      columnStart[J + 1] = static_cast<int>(blockRow.size());
+      mark[I] = I;
+      for (int J : lowerNeighbours[I])
+        for (int K = J; mark[K] != I; K = parent[K])
+        {
+          if (parent[K] < 0) parent[K] = I;
+          columnRows[K].push_back(I); // rows arrive in increasing order
+          mark[K] = I;
+        }
     }
+    columnStart.assign(blocks + 1, 0);
+    for (int J = 0; J < blocks; ++J)
+      columnStart[J + 1] = columnStart[J] + static_cast<int>(columnRows[J].size());
+    blockRow.resize(columnStart[blocks]);
+    for (int J = 0; J < blocks; ++J)
+      std::copy(columnRows[J].begin(), columnRows[J].end(), blockRow.begin() + columnStart[J]);
+    rowStart.assign(blocks + 1, 0);
+    for (int I : blockRow) ++rowStart[I + 1];
+    for (int J = 0; J < blocks; ++J) rowStart[J + 1] += rowStart[J];
+    rowColumn.resize(blockRow.size());
+    rowSlot.resize(blockRow.size());
+    std::vector<int> fill(rowStart.begin(), rowStart.end() - 1);
+    for (int K = 0; K < blocks; ++K)
+      for (int slot = columnStart[K]; slot < columnStart[K + 1]; ++slot)
+      {
+        const int at = fill[blockRow[slot]]++;
+        rowColumn[at] = K;
+        rowSlot[at] = slot;
+      }
     value.assign(16 * blockRow.size(), 0);
     diagonalInverse.assign(16 * static_cast<size_t>(blocks), 0.0f);
-    std::vector<int> slotOfRow(blocks, -1);
-    for (int J = 0; J < blocks; ++J)
+    partition(kParts);
+  }
+
+  /// Left-looking Cholesky on the 4x4 blocks, in float: column J gathers the updates of the
+  /// columns K of row J, then is scaled by the inverse of its diagonal block's factor.
+  void factoriseBlocks()
+  {
+    using Block = Eigen::Map<Eigen::Matrix4f>;
+    // Columns only receive updates from their descendants in the elimination tree: the parts of
+    // the solve (BlockSolveKernel.h) are factorised side by side, then the top of the tree.
+    auto factoriseColumn = [&](int J, std::vector<int>& slotOfRow)
     {
       for (int s = columnStart[J]; s < columnStart[J + 1]; ++s) slotOfRow[blockRow[s]] = s;
-      Eigen::Matrix4d diagonal = Eigen::Matrix4d::Zero();
-      for (int c = 0; c < 4; ++c)
-        for (int k = outer[4 * J + c]; k < outer[4 * J + c + 1]; ++k)
+      Block D(&diagonal[16 * static_cast<size_t>(J)]);
+      for (int at = rowStart[J]; at < rowStart[J + 1]; ++at)
+      {
+        const int K = rowColumn[at], slotJK = rowSlot[at];
+        const Eigen::Matrix4f LJK = Block(&work[16 * static_cast<size_t>(slotJK)]);
+        D.noalias() -= LJK * LJK.transpose();
+        // Every row below J in column K is also in column J.
+        for (int t = slotJK + 1; t < columnStart[K + 1]; ++t)
+          Block(&work[16 * static_cast<size_t>(slotOfRow[blockRow[t]])]).noalias() -=
+              Block(&work[16 * static_cast<size_t>(t)]) * LJK.transpose();
+      }
+      const Eigen::LLT<Eigen::Matrix4f> llt(D);
+      const Eigen::Matrix4f inverse =
+          llt.matrixL().solve(Eigen::Matrix4f::Identity()); // lower triangular
+      if (llt.info() != Eigen::Success || !inverse.allFinite())
+        throw Error("Block Cholesky: the matrix is not positive definite.");
+      Block stored(&diagonalInverse[16 * static_cast<size_t>(J)]);
+      stored = inverse;
+      for (int s = columnStart[J]; s < columnStart[J + 1]; ++s)
+      {
+        Block L(&work[16 * static_cast<size_t>(s)]);
+        L = (L * inverse.transpose()).eval();
+        for (int k = 0; k < 16; ++k)
+          value[16 * static_cast<size_t>(s) + k] = toBfloat16(L.data()[k]);
+      }
+    };
+    const int parts = static_cast<int>(partColumns.size());
+    std::vector<std::vector<int>> slotOfRow(parts + 1, std::vector<int>(blocks, -1));
+    parallelFor(
+        0, parts,
+        [&](int p)
         {
-          const int I = inner[k] / 4, r = inner[k] % 4;
-          if (I == J)
-            diagonal(r, c) = v[k];
-          else
-          {
-            if (slotOfRow[I] < columnStart[J])
-              throw Error("Block Cholesky: the factor is not made of 4x4 blocks.");
-            value[16 * static_cast<size_t>(slotOfRow[I]) + 4 * c + r] = toBfloat16(v[k]);
-          }
-        }
-      const Eigen::Matrix4d inverse =
-          diagonal.triangularView<Eigen::Lower>().solve(Eigen::Matrix4d::Identity());
-      Eigen::Map<Eigen::Matrix4f> stored(&diagonalInverse[16 * static_cast<size_t>(J)]);
-      stored = inverse.cast<float>();
-    }
-    partition(kParts);
+          for (int J : partColumns[p]) factoriseColumn(J, slotOfRow[p]);
+        },
+        1);
+    for (int J : topColumns) factoriseColumn(J, slotOfRow[parts]);
   }
 };
 
@@ -203,6 +250,20 @@ BlockCholesky::BlockCholesky(const Matrix& lower) : impl_(std::make_unique<Impl>
   impl_->original.resize(lower.rows());
   for (Eigen::Index i = 0; i < lower.rows(); ++i)
     impl_->original[impl_->permutation.indices()[i]] = static_cast<int>(i);
+  const int* permuted = impl_->permutation.indices().data();
+  std::vector<std::vector<int>> lowerNeighbours(impl_->blocks);
+  for (Eigen::Index c = 0; c < lower.outerSize(); ++c)
+    for (Matrix::InnerIterator it(lower, c); it; ++it)
+    {
+      const int I = permuted[it.row()] / 4, J = permuted[c] / 4;
+      if (I != J) lowerNeighbours[std::max(I, J)].push_back(std::min(I, J));
+    }
+  for (auto& neighbours : lowerNeighbours)
+  {
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  }
+  impl_->analyse(lowerNeighbours);
 }
 
 BlockCholesky::~BlockCholesky() = default;
@@ -211,13 +272,33 @@ void BlockCholesky::factorise(const Matrix& lower)
 {
   if (lower.rows() != 4 * impl_->blocks || lower.cols() != lower.rows())
     throw Error("Block Cholesky: the matrix does not have the analysed size.");
-  FactorMatrix reordered(lower.rows(), lower.cols());
-  reordered.selfadjointView<Eigen::Lower>() =
-      lower.cast<float>().selfadjointView<Eigen::Lower>().twistedBy(impl_->permutation);
-  Cholesky cholesky(reordered);
-  if (cholesky.info() != Eigen::Success)
-    throw Error("Block Cholesky: the matrix is not positive definite.");
-  impl_->buildBlocks(cholesky.matrixL().nestedExpression());
+  Impl& m = *impl_;
+  m.work.assign(16 * m.blockRow.size(), 0.0f);
+  m.diagonal.assign(16 * static_cast<size_t>(m.blocks), 0.0f);
+  // The permuted lower triangle into the blocks of L's pattern (entries above the diagonal of a
+  // block are mirrored: the diagonal blocks are kept whole).
+  const int* permuted = m.permutation.indices().data();
+  for (Eigen::Index c = 0; c < lower.outerSize(); ++c)
+    for (Matrix::InnerIterator it(lower, c); it; ++it)
+    {
+      int row = permuted[it.row()], column = permuted[c];
+      if (row < column) std::swap(row, column);
+      const int I = row / 4, J = column / 4, r = row % 4, k = column % 4;
+      const float v = static_cast<float>(it.value());
+      if (I == J)
+      {
+        m.diagonal[16 * static_cast<size_t>(J) + 4 * k + r] = v;
+        m.diagonal[16 * static_cast<size_t>(J) + 4 * r + k] = v;
+        continue;
+      }
+      const int* begin = m.blockRow.data() + m.columnStart[J];
+      const int* end = m.blockRow.data() + m.columnStart[J + 1];
+      const int* slot = std::lower_bound(begin, end, I);
+      if (slot == end || *slot != I)
+        throw Error("Block Cholesky: the matrix has an entry outside the analysed pattern.");
+      m.work[16 * static_cast<size_t>(slot - m.blockRow.data()) + 4 * k + r] = v;
+    }
+  m.factoriseBlocks();
 }
 
 Eigen::Index BlockCholesky::blockCount() const
