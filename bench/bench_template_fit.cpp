@@ -9,11 +9,13 @@
 // options: --stride S, --frames N (first N after the stride), --template K (template frame K
 // instead of the automatic choice; 0 fits one chain), --variants LIST (comma separated,
 // of exact, lbfgs, no-ec, no-ed, lbfgs-no-ec, true-ec (the matched vertices pointing at their
-// true positions: stage 3 alone); default exact), --rounds R (nearest-point rounds per
-// stage), --stages "wc,ws,wd,wt;..." (weights of each stage), --outlier D (correspondences further
-// than D from the current fit are dropped; 0: never), --predict R (each frame started from the
-// previous fit moved by the landmarks' locally rigid motion, Gaussian width R metres), --curve FILE
-// (per-frame mean error of each variant, CSV, rewritten after each variant).
+// true positions: stage 3 alone); default exact), --refactor-steps S (exact solve: renew a
+// stage's factor after a frame averaging more CG steps per round; 0: only on failure), --rounds R
+// (nearest-point rounds per stage), --stages "wc,ws,wd,wt;..." (weights of each stage), --outlier D
+// (correspondences further than D from the current fit are dropped; 0: never), --predict R (each
+// frame started from the previous fit moved by the landmarks' locally rigid motion, Gaussian width
+// R metres), --curve FILE (per-frame mean error of each variant, CSV, rewritten after each
+// variant).
 #include "BenchSequence.h"
 
 #include <clothtrack/Error.h>
@@ -52,6 +54,7 @@ int roundsPerStage = 0;           // 0: the default
 double solverTolerance = 0;       // 0: the default
 double convergence = 0;           // 0: the default
 double intermediateTolerance = 0; // 0: the default
+double refactorSteps = -1;        // negative: the default
 std::vector<FitStage> stages;     // empty: the default
 double outlier = -1;              // negative: the default
 double predictRadius = 0;         // > 0: starts predicted from the landmarks' motion
@@ -65,6 +68,7 @@ Variant variant(const std::string& name)
   if (solverTolerance > 0) v.options.solverTolerance = solverTolerance;
   if (convergence > 0) v.options.convergence = convergence;
   if (intermediateTolerance > 0) v.options.intermediateTolerance = intermediateTolerance;
+  if (refactorSteps >= 0) v.options.refactorSteps = refactorSteps;
   if (lengthScale > 0) v.options.lengthScale = lengthScale;
   if (!stages.empty()) v.options.stages = stages;
   if (outlier >= 0) v.options.correspondenceOutlier = outlier;
@@ -253,6 +257,8 @@ int main(int argc, char** argv)
         setThreadCount(std::stoi(value()));
       else if (args[i] == "--intermediate-tolerance")
         intermediateTolerance = std::stod(value());
+      else if (args[i] == "--refactor-steps")
+        refactorSteps = std::stod(value());
       else if (args[i] == "--convergence")
         convergence = std::stod(value());
       else if (args[i] == "--length-scale")
@@ -290,7 +296,7 @@ int main(int argc, char** argv)
     std::fprintf(stderr,
                  "usage: bench_template_fit samba|remesh DIR | synthetic PRESET FRAMES "
                  "[--stride S] [--frames N] [--template K] [--variants exact,lbfgs,no-ec,no-ed] "
-                 "[--curve FILE] [--tolerance T] [--intermediate-tolerance T] "
+                 "[--curve FILE] [--tolerance T] [--intermediate-tolerance T] [--refactor-steps S] "
                  "[--convergence M] [--rounds R] [--predict R] [--threads N]\n");
     return 1;
   }

@@ -166,6 +166,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     options.roundsPerStage = this->RoundsPerStage;
     options.solverTolerance = this->SolverTolerance;
     options.intermediateTolerance = this->IntermediateTolerance;
+    options.refactorSteps = this->RefactorSteps;
     options.nearestEvery = this->NearestEvery;
     options.maxNearestDistance = this->MaximumNearestDistance;
     options.maxNormalAngle = this->MaximumNormalAngle;
@@ -283,6 +284,7 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RoundsPerStage: " << this->RoundsPerStage << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "IntermediateTolerance: " << this->IntermediateTolerance << "\n";
+  os << indent << "RefactorSteps: " << this->RefactorSteps << "\n";
   os << indent << "NearestEvery: " << this->NearestEvery << "\n";
   os << indent << "MaximumNearestDistance: " << this->MaximumNearestDistance << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";

@@ -76,6 +76,10 @@ public:
   vtkGetMacro(SolverTolerance, double);
   vtkSetClampMacro(IntermediateTolerance, double, 1e-12, 0.5);
   vtkGetMacro(IntermediateTolerance, double);
+  /// Exact solver: a stage's factorisation is renewed after a frame whose rounds needed more
+  /// conjugate-gradient steps than this on average (0: only when they fail to converge).
+  vtkSetClampMacro(RefactorSteps, double, 0.0, 1000.0);
+  vtkGetMacro(RefactorSteps, double);
   /// L-BFGS iterations per round (the paper: nearest points every 20 iterations).
   vtkSetClampMacro(NearestEvery, int, 1, 10000);
   vtkGetMacro(NearestEvery, int);
@@ -118,6 +122,7 @@ private:
   int RoundsPerStage = 5;
   double SolverTolerance = 1e-4;
   double IntermediateTolerance = 1e-4;
+  double RefactorSteps = 4.0;
   int NearestEvery = 20;
   double MaximumNearestDistance = 0.2;
   double MaximumNormalAngle = 90.0;

@@ -203,6 +203,9 @@ int alignCommand(const Args& args, AlignMode mode)
       "intermediate-tolerance",
       po::value(&fit.intermediateTolerance)->default_value(fit.intermediateTolerance),
       "exact solver: relative residual of the rounds before a stage's last")(
+      "refactor-steps", po::value(&fit.refactorSteps)->default_value(fit.refactorSteps),
+      "exact solver: renew a stage's factorisation after a frame that needed more conjugate-"
+      "gradient steps per round than this (0: only when they fail)")(
       "stages", po::value(&stageSpec),
       "template fit weight stages wc,ws,wd,wt separated by '/' (default the paper's: "
       "1,400,0,0.1/1,200,10,0.1/0,100,10,0.1/0,50,10,0.1)")(
@@ -252,6 +255,8 @@ int alignCommand(const Args& args, AlignMode mode)
   if (!(fit.solverTolerance > 0 && fit.solverTolerance < 1) ||
       !(fit.intermediateTolerance > 0 && fit.intermediateTolerance < 1))
     throw UsageError{"--solver-tolerance and --intermediate-tolerance must be in (0, 1)"};
+  if (!(fit.refactorSteps >= 0) || !std::isfinite(fit.refactorSteps))
+    throw UsageError{"--refactor-steps must be 0 or more"};
   const TemplateCriterion criterion = parseTemplateCriterion(templateCriterion);
   setThreadCount(threads);
   const bool skipBad = values["skip-bad-frames"].as<bool>();
@@ -423,6 +428,7 @@ int alignCommand(const Args& args, AlignMode mode)
                                  {"ground_truth", truthFiles},
                                  {"solver", solver},
                                  {"tolerances", {fit.solverTolerance, fit.intermediateTolerance}},
+                                 {"refactor_steps", fit.refactorSteps},
                                  {"truth_distance", truthDistance},
                                  {"predict_radius", predictRadius},
                                  {"use_correspondence", fit.useCorrespondence},

@@ -153,6 +153,7 @@ struct TemplateFitter::Impl
   // reach the new solution in a few steps. A factor is renewed when they need too many.
   // fit() is therefore not reentrant.
   mutable std::vector<std::unique_ptr<BlockCholesky>> factors;
+  mutable std::vector<unsigned char> stale; // per stage: renew the factor at its next round
   mutable Unknowns scratch[4];
 
   explicit Impl(const TriangleMesh& mesh)
@@ -198,7 +199,7 @@ struct TemplateFitter::Impl
                  int& factorisations, bool mayRefactor = true) const
   {
     constexpr int kMaxSteps = 20;
-    if (factors.size() <= stage) factors.resize(stage + 1);
+    if (factors.size() <= stage) factors.resize(stage + 1), stale.resize(stage + 1, 0);
     std::unique_ptr<BlockCholesky>& factor = factors[stage];
     auto refactor = [&]()
     {
@@ -214,7 +215,8 @@ struct TemplateFitter::Impl
       }
       ++factorisations;
     };
-    if (!factor) refactor();
+    if (!factor || stale[stage]) refactor();
+    stale[stage] = 0;
     const double target = tolerance * q.R.norm();
     // Preconditioned conjugate gradients; the vectors are reused (each is a megabyte).
     Unknowns& r = scratch[0];
@@ -398,6 +400,8 @@ void checkOptions(const TemplateFitOptions& o)
   if (!(o.solverTolerance > 0 && o.solverTolerance < 1) ||
       !(o.intermediateTolerance > 0 && o.intermediateTolerance < 1))
     throw Error("Template fit: the solver tolerances must be in (0, 1).");
+  if (!(o.refactorSteps >= 0) || !std::isfinite(o.refactorSteps))
+    throw Error("Template fit: refactorSteps must be 0 or more.");
   if (o.nearestEvery < 1) throw Error("Template fit: nearestEvery must be at least 1.");
   if (!(o.maxNearestDistance > 0)) throw Error("Template fit: maxNearestDistance must be > 0.");
   if (!(o.correspondenceOutlier >= 0))
@@ -504,6 +508,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
     const double ws = m.neighbourCount > 0 ? stage.smoothness / m.neighbourCount : 0.0;
     const double wt = stage.temporal / n;
     const int rounds = usesNearest ? options_.roundsPerStage : 1;
+    const int stepsBefore = result.iterations, roundsBefore = result.rounds;
     for (int round = 0; round < rounds; ++round)
     {
       Points before = positions(X);
@@ -540,6 +545,9 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
       if (converged || round + 1 == rounds) result.energy = q.energy(X);
       if (converged) break;
     }
+    if (options_.solver == FitSolver::Exact && options_.refactorSteps > 0 &&
+        result.iterations - stepsBefore > options_.refactorSteps * (result.rounds - roundsBefore))
+      m.stale[stageIndex] = 1;
   }
   result.used = active;
   result.positions = (positions(X) / scale).rowwise() + centroid.transpose();

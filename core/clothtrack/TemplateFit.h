@@ -61,6 +61,11 @@ struct TemplateFitOptions
   /// the next round's nearest points. 1e-3 there takes a third less time on samba for 0.13 cm
   /// more mean error (BENCHMARKS.md), so the default is the last round's.
   double intermediateTolerance = 1e-4;
+  /// Exact solver: a stage's factorisation, kept from frame to frame as the preconditioner, is
+  /// renewed at the next frame once its conjugate gradients needed more than this many steps
+  /// per round in a frame (the template has moved far from the factored matrix). 0: only when
+  /// they fail to converge.
+  double refactorSteps = 4.0;
   /// Correspondences further than this from the template as fitted so far are dropped before
   /// each round but the first (metres; 0 keeps them all, as the paper does).
   double correspondenceOutlier = 0.0;

@@ -198,6 +198,9 @@ TEST(TemplateFit, RefusesBadInput)
   TemplateFitOptions undetermined;
   undetermined.stages = {{1, 0, 0, 0}};
   EXPECT_THROW(TemplateFitter(t, undetermined), Error);
+  TemplateFitOptions negativeRefactor;
+  negativeRefactor.refactorSteps = -1;
+  EXPECT_THROW(TemplateFitter(t, negativeRefactor), Error);
 
   const TemplateFitter fitter(t);
   Points nan = t.V;
@@ -260,4 +263,35 @@ TEST(TemplateFit, SideBySideChainsFitAsOneThread)
     EXPECT_EQ((one[k].positions - two[k].positions).cwiseAbs().maxCoeff(), 0.0) << "frame " << k;
     EXPECT_LT(meanError(two[k].positions, frames[k].V), 0.01) << "frame " << k;
   }
+}
+
+TEST(TemplateFit, StaleFactorsAreRenewedWithoutChangingTheFit)
+{
+  // Frames that bend further and further from the first, whose factors precondition the rest.
+  const TriangleMesh t = limb();
+  std::vector<TriangleMesh> frames;
+  std::vector<VertexTargets> targets;
+  for (int k = 0; k < 6; ++k)
+  {
+    frames.push_back(moved(t, 0.15 * k, Vec3(0.02 * k, 0.0, 0.0)));
+    targets.push_back(everyNth(frames.back(), 5));
+  }
+  auto run = [&](double refactorSteps)
+  {
+    TemplateFitOptions options;
+    options.refactorSteps = refactorSteps;
+    return fitTemplateSequence(
+        frames[0], 0, 6, [&](int k) -> const TriangleMesh& { return frames[k]; },
+        [&](int k) -> const VertexTargets* { return &targets[k]; }, options);
+  };
+  const auto kept = run(0), renewed = run(0.5);
+  int keptFactorisations = 0, renewedFactorisations = 0;
+  for (int k = 1; k < 6; ++k)
+  {
+    keptFactorisations += kept[k].factorisations;
+    renewedFactorisations += renewed[k].factorisations;
+    // Both solve the same equations to the same tolerance.
+    EXPECT_LT(meanError(kept[k].positions, renewed[k].positions), 1e-4) << "frame " << k;
+  }
+  EXPECT_GT(renewedFactorisations, keptFactorisations);
 }
