@@ -147,8 +147,6 @@ struct BlockCholesky::Impl
 
   // Row J of L: the columns K < J with a block L_JK (ascending), and that block's slot.
   std::vector<int> rowStart, rowColumn, rowSlot;
-  std::vector<float> work; // L in float during a factorisation, slot layout as `value`
-  std::vector<float> diagonal;
 
   /// The block pattern of L from the block graph of the permuted matrix (lowerNeighbours[I]: the
   /// blocks J < I coupled to I), by walking the elimination tree from each coupling (Liu).
@@ -192,8 +190,10 @@ struct BlockCholesky::Impl
   }
 
   /// Left-looking Cholesky on the 4x4 blocks, in float: column J gathers the updates of the
-  /// columns K of row J, then is scaled by the inverse of its diagonal block's factor.
-  void factoriseBlocks()
+  /// columns K of row J, then is scaled by the inverse of its diagonal block's factor. `work`
+  /// holds the matrix's blocks in the slots of L (layout as `value`), `diagonal` its diagonal
+  /// blocks; both are overwritten.
+  void factoriseBlocks(std::vector<float>& work, std::vector<float>& diagonal)
   {
     using Block = Eigen::Map<Eigen::Matrix4f>;
     // Columns only receive updates from their descendants in the elimination tree: the parts of
@@ -273,8 +273,9 @@ void BlockCholesky::factorise(const Matrix& lower)
   if (lower.rows() != 4 * impl_->blocks || lower.cols() != lower.rows())
     throw Error("Block Cholesky: the matrix does not have the analysed size.");
   Impl& m = *impl_;
-  m.work.assign(16 * m.blockRow.size(), 0.0f);
-  m.diagonal.assign(16 * static_cast<size_t>(m.blocks), 0.0f);
+  // Float copies, needed only while factorising (13 MB for a 10k-vertex template).
+  std::vector<float> work(16 * m.blockRow.size(), 0.0f);
+  std::vector<float> diagonal(16 * static_cast<size_t>(m.blocks), 0.0f);
   // The permuted lower triangle into the blocks of L's pattern (entries above the diagonal of a
   // block are mirrored: the diagonal blocks are kept whole).
   const int* permuted = m.permutation.indices().data();
@@ -287,8 +288,8 @@ void BlockCholesky::factorise(const Matrix& lower)
       const float v = static_cast<float>(it.value());
       if (I == J)
       {
-        m.diagonal[16 * static_cast<size_t>(J) + 4 * k + r] = v;
-        m.diagonal[16 * static_cast<size_t>(J) + 4 * r + k] = v;
+        diagonal[16 * static_cast<size_t>(J) + 4 * k + r] = v;
+        diagonal[16 * static_cast<size_t>(J) + 4 * r + k] = v;
         continue;
       }
       const int* begin = m.blockRow.data() + m.columnStart[J];
@@ -296,12 +297,9 @@ void BlockCholesky::factorise(const Matrix& lower)
       const int* slot = std::lower_bound(begin, end, I);
       if (slot == end || *slot != I)
         throw Error("Block Cholesky: the matrix has an entry outside the analysed pattern.");
-      m.work[16 * static_cast<size_t>(slot - m.blockRow.data()) + 4 * k + r] = v;
+      work[16 * static_cast<size_t>(slot - m.blockRow.data()) + 4 * k + r] = v;
     }
-  m.factoriseBlocks();
-  // The float copy is only needed while factorising (13 MB for a 10k-vertex template).
-  std::vector<float>().swap(m.work);
-  std::vector<float>().swap(m.diagonal);
+  m.factoriseBlocks(work, diagonal);
 }
 
 Eigen::Index BlockCholesky::blockCount() const

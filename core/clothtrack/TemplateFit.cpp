@@ -243,17 +243,8 @@ struct TemplateFitter::Impl
                  Span(r.data() + from, to - from) -= alpha * Span(Hp.data() + from, to - from);
                });
       factor->solve(r, z);
-      double partialRz[kSpans], partialRr[kSpans];
-      forSpans(size,
-               [&](Eigen::Index from, Eigen::Index to, int k)
-               {
-                 const Span rk(r.data() + from, to - from);
-                 partialRz[k] = rk.dot(Span(z.data() + from, to - from));
-                 partialRr[k] = rk.squaredNorm();
-               });
-      double rzNext = 0;
-      rr = 0;
-      for (int k = 0; k < kSpans; ++k) rzNext += partialRz[k], rr += partialRr[k];
+      const double rzNext = parallelDot(r, z);
+      rr = parallelDot(r, r);
       const double beta = rzNext / rz;
       forSpans(size,
                [&](Eigen::Index from, Eigen::Index to, int)
