@@ -218,7 +218,9 @@ void writeMeshFile(const std::string& path, vtkPolyData* polyData)
   {
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetDataModeToAppended();
-    writer->SetCompressorTypeToZLib();
+    // LZ4: a quarter of zlib's time for a quarter more bytes (a 10k-vertex aligned frame: 8
+    // against 34 ms, 1.2 against 1.0 MB); writing is on the fit's path, once per frame.
+    writer->SetCompressorTypeToLZ4();
     run(writer.Get());
   }
   else if (ext == ".vtk")

@@ -471,7 +471,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
   auto findNearest = [&](const Points& p)
   {
     deformed.V = p;
-    const Points normals = vertexNormals(deformed);
+    const Points normals = areaWeightedVertexNormals(deformed);
     parallelFor(0, n,
                 [&](int i)
                 {

@@ -68,6 +68,24 @@ Points vertexNormals(const TriangleMesh& mesh)
   return normals;
 }
 
+Points areaWeightedVertexNormals(const TriangleMesh& mesh)
+{
+  // A face's cross product is its normal times twice its area: summed as is.
+  Points normals = Points::Zero(mesh.numVertices(), 3);
+  for (int f = 0; f < mesh.numFaces(); ++f)
+  {
+    const Vec3 a = mesh.vertex(mesh.F(f, 0));
+    const Vec3 n = (mesh.vertex(mesh.F(f, 1)) - a).cross(mesh.vertex(mesh.F(f, 2)) - a);
+    for (int k = 0; k < 3; ++k) normals.row(mesh.F(f, k)) += n.transpose();
+  }
+  for (int i = 0; i < mesh.numVertices(); ++i)
+  {
+    const double len = normals.row(i).norm();
+    if (len > 0) normals.row(i) /= len;
+  }
+  return normals;
+}
+
 double surfaceArea(const TriangleMesh& mesh)
 {
   return faceAreas(mesh).sum();

@@ -26,6 +26,9 @@ Eigen::VectorXd faceAreas(const TriangleMesh& mesh);
 Points faceNormals(const TriangleMesh& mesh);
 /// Angle-weighted unit vertex normals (zero for an isolated vertex).
 Points vertexNormals(const TriangleMesh& mesh);
+/// Area-weighted unit vertex normals (zero for an isolated vertex): a tenth of the cost of the
+/// angle-weighted ones, for normals recomputed many times where a few degrees do not matter.
+Points areaWeightedVertexNormals(const TriangleMesh& mesh);
 /// Sum of triangle areas.
 double surfaceArea(const TriangleMesh& mesh);
 /// Volume enclosed by a closed mesh, positive when its triangles face outward.
