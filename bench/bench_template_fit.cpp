@@ -15,7 +15,10 @@
 // (correspondences further than D from the current fit are dropped; 0: never), --predict R (each
 // frame started from the previous fit moved by the landmarks' locally rigid motion, Gaussian width
 // R metres), --curve FILE (per-frame mean error of each variant, CSV, rewritten after each
-// variant).
+// variant), --repeat N (the variants take turns N times; a table of their median, fastest and
+// slowest wall time per frame follows). A variant may carry options of its own after slashes,
+// e.g. exact/reuse=0.0002/convergence=1e-3 (keys: reuse, convergence, rounds, tolerance,
+// intermediate, refactor).
 #include "BenchSequence.h"
 
 #include <clothtrack/Error.h>
@@ -61,9 +64,12 @@ double predictRadius = 0;         // > 0: starts predicted from the landmarks' m
 double predictOffset = 1e9;       // landmarks further from the body are not used for it
 double lengthScale = 0;           // 0: the default
 
-Variant variant(const std::string& name)
+Variant variant(const std::string& fullName)
 {
-  Variant v{name, {}};
+  // NAME/key=value/...: a variant with some options of its own (timing comparisons in one run).
+  const std::vector<std::string> parts = split(fullName, '/');
+  const std::string name = parts.empty() ? "" : parts[0];
+  Variant v{fullName, {}};
   if (roundsPerStage > 0) v.options.roundsPerStage = roundsPerStage;
   if (solverTolerance > 0) v.options.solverTolerance = solverTolerance;
   if (convergence > 0) v.options.convergence = convergence;
@@ -78,13 +84,34 @@ Variant variant(const std::string& name)
   if (name != "exact" && name != "lbfgs" && name != "no-ec" && name != "no-ed" &&
       name != "lbfgs-no-ec" && name != "true-ec")
     throw Error("unknown variant '" + name + "'");
+  for (size_t k = 1; k < parts.size(); ++k)
+  {
+    const size_t eq = parts[k].find('=');
+    if (eq == std::string::npos) throw Error("variant option '" + parts[k] + "' is not key=value");
+    const std::string key = parts[k].substr(0, eq);
+    const double value = std::stod(parts[k].substr(eq + 1));
+    if (key == "reuse")
+      v.options.nearestReuse = value;
+    else if (key == "convergence")
+      v.options.convergence = value;
+    else if (key == "rounds")
+      v.options.roundsPerStage = static_cast<int>(value);
+    else if (key == "tolerance")
+      v.options.solverTolerance = value;
+    else if (key == "intermediate")
+      v.options.intermediateTolerance = value;
+    else if (key == "refactor")
+      v.options.refactorSteps = value;
+    else
+      throw Error("unknown variant option '" + key + "'");
+  }
   return v;
 }
 
 struct Summary
 {
   double mean = 0, p90 = 0, within10 = 0, worstFrame = 0, secondsPerFrame = 0;
-  double roundsPerFrame = 0, stepsPerFrame = 0, factorisationsPerFrame = 0;
+  double roundsPerFrame = 0, stepsPerFrame = 0, factorisationsPerFrame = 0, searchesPerFrame = 0;
   std::vector<double> perFrame;
 };
 
@@ -101,6 +128,7 @@ Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
     out.roundsPerFrame += fits[k].rounds;
     out.stepsPerFrame += fits[k].iterations;
     out.factorisationsPerFrame += fits[k].factorisations;
+    out.searchesPerFrame += fits[k].nearestSearches;
     double sum = 0;
     int count = 0;
     for (int v = 0; v < fits[k].positions.rows(); ++v)
@@ -127,6 +155,7 @@ Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
   out.roundsPerFrame /= std::max<size_t>(1, fits.size() - 1);
   out.stepsPerFrame /= std::max<size_t>(1, fits.size() - 1);
   out.factorisationsPerFrame /= std::max<size_t>(1, fits.size() - 1);
+  out.searchesPerFrame /= std::max<size_t>(1, fits.size() - 1);
   return out;
 }
 
@@ -149,7 +178,7 @@ void writeCurve(const std::string& path, const std::vector<std::string>& variant
 }
 
 int run(Sequence& s, const std::vector<std::string>& variants, const std::string& curve,
-        int forcedTemplate)
+        int forcedTemplate, int repeat)
 {
   if (forcedTemplate >= static_cast<int>(s.captures.size()))
     throw Error("--template " + std::to_string(forcedTemplate) + " is past the last frame");
@@ -173,52 +202,70 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
               seconds(start) / std::max(1, frames - 1), 100 * matched / std::max(1, frames - 1));
   // fit time/frame: one frame's fit; wall/frame: the whole stage over the fitted frames, the two
   // chains (before and after the template frame) side by side.
-  std::printf("| variant | mean error | p90 | within 10 cm | worst frame mean | fit time/frame | "
-              "wall/frame | rounds/frame | solver steps/frame | factorisations/frame |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| variant | mean error | p90 | within 10 cm | worst frame mean | fit time/frame | "
+      "wall/frame | rounds/frame | solver steps/frame | factorisations/frame | searches/frame |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::map<std::string, Summary> results;
-  for (const std::string& name : variants)
-  {
-    const Variant v = variant(name);
-    // true-ec: the same matched vertices, each pointing at its true position (stage 3 alone).
-    std::vector<VertexTargets> truthTargets;
-    if (name == "true-ec")
-      for (int k = 0; k < frames; ++k)
-      {
-        VertexTargets t = targets[k];
-        for (int i = 0; i < templ.numVertices() && k != j; ++i)
+  std::map<std::string, std::vector<double>> walls;
+  // With --repeat the variants take turns, so that a slower spell of the machine falls on all.
+  for (int turn = 0; turn < repeat; ++turn)
+    for (const std::string& name : variants)
+    {
+      const Variant v = variant(name);
+      // true-ec: the same matched vertices, each pointing at its true position (stage 3 alone).
+      std::vector<VertexTargets> truthTargets;
+      if (split(name, '/')[0] == "true-ec")
+        for (int k = 0; k < frames; ++k)
         {
-          Vec3 truth;
-          if (t.matched[i] && s.truthOf(j, i, k, truth))
-            t.position.row(i) = truth.transpose();
-          else
-            t.matched[i] = 0;
+          VertexTargets t = targets[k];
+          for (int i = 0; i < templ.numVertices() && k != j; ++i)
+          {
+            Vec3 truth;
+            if (t.matched[i] && s.truthOf(j, i, k, truth))
+              t.position.row(i) = truth.transpose();
+            else
+              t.matched[i] = 0;
+          }
+          truthTargets.push_back(std::move(t));
         }
-        truthTargets.push_back(std::move(t));
-      }
-    StartPrediction predict;
-    if (predictRadius > 0)
-      predict = [&](int k, int from, const Points& fit)
-      {
-        std::vector<Vec3> before, after;
-        pairLandmarks(s.captures[from], s.landmarks[from], s.captures[k], s.landmarks[k], before,
-                      after, predictOffset);
-        return predictMotion(fit, before, after, predictRadius);
-      };
-    const auto fitStart = std::chrono::steady_clock::now();
-    const auto fits = fitTemplateSequence(
-        templ, j, frames, [&](int k) -> const TriangleMesh& { return s.captures[k]; },
-        [&](int k) { return truthTargets.empty() ? &targets[k] : &truthTargets[k]; }, v.options, {},
-        predict);
-    const double wall = seconds(fitStart) / std::max(1, frames - 1);
-    const Summary r = evaluate(s, j, fits);
-    std::printf(
-        "| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s | %.3f s | %.1f | %.1f | %.2f |\n",
-        name.c_str(), 100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame, r.secondsPerFrame,
-        wall, r.roundsPerFrame, r.stepsPerFrame, r.factorisationsPerFrame);
-    std::fflush(stdout);
-    results[name] = r;
-    if (!curve.empty()) writeCurve(curve, variants, results, frames);
+      StartPrediction predict;
+      if (predictRadius > 0)
+        predict = [&](int k, int from, const Points& fit)
+        {
+          std::vector<Vec3> before, after;
+          pairLandmarks(s.captures[from], s.landmarks[from], s.captures[k], s.landmarks[k], before,
+                        after, predictOffset);
+          return predictMotion(fit, before, after, predictRadius);
+        };
+      const auto fitStart = std::chrono::steady_clock::now();
+      const auto fits = fitTemplateSequence(
+          templ, j, frames, [&](int k) -> const TriangleMesh& { return s.captures[k]; },
+          [&](int k) { return truthTargets.empty() ? &targets[k] : &truthTargets[k]; }, v.options,
+          {}, predict);
+      const double wall = seconds(fitStart) / std::max(1, frames - 1);
+      const Summary r = evaluate(s, j, fits);
+      std::printf("| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s | %.3f s | %.1f | %.1f | "
+                  "%.2f | %.0f |\n",
+                  name.c_str(), 100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame,
+                  r.secondsPerFrame, wall, r.roundsPerFrame, r.stepsPerFrame,
+                  r.factorisationsPerFrame, r.searchesPerFrame);
+      std::fflush(stdout);
+      results[name] = r;
+      walls[name].push_back(wall);
+      if (!curve.empty()) writeCurve(curve, variants, results, frames);
+    }
+  if (repeat > 1)
+  {
+    std::printf("\n| variant | wall/frame, median of %d | fastest | slowest |\n|---|---|---|---|\n",
+                repeat);
+    for (const std::string& name : variants)
+    {
+      std::vector<double>& w = walls[name];
+      std::sort(w.begin(), w.end());
+      std::printf("| %s | %.3f s | %.3f s | %.3f s |\n", name.c_str(), w[w.size() / 2], w.front(),
+                  w.back());
+    }
   }
   return 0;
 }
@@ -230,7 +277,7 @@ int main(int argc, char** argv)
   try
   {
     std::vector<std::string> args(argv + 1, argv + argc);
-    int stride = 1, maxFrames = 0, forcedTemplate = -1;
+    int stride = 1, maxFrames = 0, forcedTemplate = -1, repeat = 1;
     std::vector<std::string> variants = {"exact"};
     std::string curve;
     std::vector<std::string> positional;
@@ -249,6 +296,8 @@ int main(int argc, char** argv)
         maxFrames = std::stoi(value());
       else if (args[i] == "--variants")
         variants = split(value());
+      else if (args[i] == "--repeat")
+        repeat = std::max(1, std::stoi(value()));
       else if (args[i] == "--curve")
         curve = value();
       else if (args[i] == "--tolerance")
@@ -286,18 +335,20 @@ int main(int argc, char** argv)
     if ((mode == "samba" || mode == "remesh") && positional.size() == 2)
     {
       Sequence s = directorySequence(positional[1], stride, maxFrames, mode == "remesh");
-      return run(s, variants, curve, forcedTemplate);
+      return run(s, variants, curve, forcedTemplate, repeat);
     }
     if (mode == "synthetic" && positional.size() == 3)
     {
       Sequence s = syntheticSequence(positional[1], std::stoi(positional[2]), false);
-      return run(s, variants, curve, forcedTemplate);
+      return run(s, variants, curve, forcedTemplate, repeat);
     }
     std::fprintf(stderr,
                  "usage: bench_template_fit samba|remesh DIR | synthetic PRESET FRAMES "
                  "[--stride S] [--frames N] [--template K] [--variants exact,lbfgs,no-ec,no-ed] "
                  "[--curve FILE] [--tolerance T] [--intermediate-tolerance T] [--refactor-steps S] "
-                 "[--convergence M] [--rounds R] [--predict R] [--threads N]\n");
+                 "[--convergence M] [--rounds R] [--predict R] [--threads N] [--repeat N]\n"
+                 "a variant may set options of its own: exact/reuse=0.0002/convergence=1e-3 (keys "
+                 "reuse, convergence, rounds, tolerance, intermediate, refactor)\n");
     return 1;
   }
   catch (const std::exception& e)

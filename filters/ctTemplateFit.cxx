@@ -167,6 +167,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     options.solverTolerance = this->SolverTolerance;
     options.intermediateTolerance = this->IntermediateTolerance;
     options.refactorSteps = this->RefactorSteps;
+    options.nearestReuse = this->NearestReuse;
     options.nearestEvery = this->NearestEvery;
     options.maxNearestDistance = this->MaximumNearestDistance;
     options.maxNormalAngle = this->MaximumNormalAngle;
@@ -285,6 +286,7 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "IntermediateTolerance: " << this->IntermediateTolerance << "\n";
   os << indent << "RefactorSteps: " << this->RefactorSteps << "\n";
+  os << indent << "NearestReuse: " << this->NearestReuse << "\n";
   os << indent << "NearestEvery: " << this->NearestEvery << "\n";
   os << indent << "MaximumNearestDistance: " << this->MaximumNearestDistance << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";

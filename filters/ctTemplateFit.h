@@ -80,6 +80,11 @@ public:
   /// conjugate-gradient steps than this on average (0: only when they fail to converge).
   vtkSetClampMacro(RefactorSteps, double, 0.0, 1000.0);
   vtkGetMacro(RefactorSteps, double);
+  /// A template vertex that moved less than this (metres) since its last closest-point search
+  /// is projected onto the same triangle: the point found is at most twice this much farther
+  /// than the closest. 0 searches every round.
+  vtkSetClampMacro(NearestReuse, double, 0.0, 0.01);
+  vtkGetMacro(NearestReuse, double);
   /// L-BFGS iterations per round (the paper: nearest points every 20 iterations).
   vtkSetClampMacro(NearestEvery, int, 1, 10000);
   vtkGetMacro(NearestEvery, int);
@@ -123,6 +128,7 @@ private:
   double SolverTolerance = 1e-4;
   double IntermediateTolerance = 1e-4;
   double RefactorSteps = 4.0;
+  double NearestReuse = 2e-4;
   int NearestEvery = 20;
   double MaximumNearestDistance = 0.2;
   double MaximumNormalAngle = 90.0;

@@ -206,6 +206,9 @@ int alignCommand(const Args& args, AlignMode mode)
       "refactor-steps", po::value(&fit.refactorSteps)->default_value(fit.refactorSteps),
       "exact solver: renew a stage's factorisation after a frame that needed more conjugate-"
       "gradient steps per round than this (0: only when they fail)")(
+      "nearest-reuse", po::value(&fit.nearestReuse)->default_value(fit.nearestReuse),
+      "metres: a template vertex that moved less than this since its last closest-point search "
+      "is projected onto the same triangle (0: search every round)")(
       "stages", po::value(&stageSpec),
       "template fit weight stages wc,ws,wd,wt separated by '/' (default the paper's: "
       "1,400,0,0.1/1,200,10,0.1/0,100,10,0.1/0,50,10,0.1)")(
@@ -257,6 +260,8 @@ int alignCommand(const Args& args, AlignMode mode)
     throw UsageError{"--solver-tolerance and --intermediate-tolerance must be in (0, 1)"};
   if (!(fit.refactorSteps >= 0) || !std::isfinite(fit.refactorSteps))
     throw UsageError{"--refactor-steps must be 0 or more"};
+  if (!(fit.nearestReuse >= 0) || !std::isfinite(fit.nearestReuse))
+    throw UsageError{"--nearest-reuse must be 0 or more"};
   const TemplateCriterion criterion = parseTemplateCriterion(templateCriterion);
   setThreadCount(threads);
   const bool skipBad = values["skip-bad-frames"].as<bool>();
@@ -429,6 +434,7 @@ int alignCommand(const Args& args, AlignMode mode)
                                  {"solver", solver},
                                  {"tolerances", {fit.solverTolerance, fit.intermediateTolerance}},
                                  {"refactor_steps", fit.refactorSteps},
+                                 {"nearest_reuse", fit.nearestReuse},
                                  {"truth_distance", truthDistance},
                                  {"predict_radius", predictRadius},
                                  {"use_correspondence", fit.useCorrespondence},

@@ -309,6 +309,11 @@ Eigen::Index BlockCholesky::blockCount() const
 
 void BlockCholesky::solve(const RightHandSides& rhs, RightHandSides& x) const
 {
+  solveDot(rhs, x);
+}
+
+double BlockCholesky::solveDot(const RightHandSides& rhs, RightHandSides& x) const
+{
   const Impl& m = *impl_;
   const int n = 4 * m.blocks;
   if (rhs.rows() != n) throw Error("Block Cholesky: the right-hand sides do not match the matrix.");
@@ -349,14 +354,29 @@ void BlockCholesky::solve(const RightHandSides& rhs, RightHandSides& x) const
   parallelFor(
       0, parts, [&](int p) { run(kernel.backward, m.partColumns[p]); }, 1);
   x.resize(n, 3);
+  constexpr int kSpans = 16;
+  double partial[kSpans];
   parallelFor(
-      0, m.blocks,
-      [&](int J)
+      0, kSpans,
+      [&](int span)
       {
-        for (int c = 0; c < 3; ++c)
+        double dot = 0;
+        for (int J = m.blocks * span / kSpans; J < m.blocks * (span + 1) / kSpans; ++J)
           for (int r = 0; r < 4; ++r)
-            x(original[4 * J + r], c) = y[3 * static_cast<size_t>(J) + c].v[r];
+          {
+            const int row = original[4 * J + r];
+            for (int c = 0; c < 3; ++c)
+            {
+              const double value = y[3 * static_cast<size_t>(J) + c].v[r];
+              x(row, c) = value;
+              dot += rhs(row, c) * value;
+            }
+          }
+        partial[span] = dot;
       },
-      1024);
+      1);
+  double dot = 0;
+  for (double p : partial) dot += p;
+  return dot;
 }
 } // namespace clothtrack

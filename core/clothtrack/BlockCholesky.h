@@ -33,6 +33,9 @@ public:
   /// x with L L^T x = rhs, in single-precision arithmetic. Not reentrant: it uses scratch
   /// memory of the object.
   void solve(const RightHandSides& rhs, RightHandSides& x) const;
+  /// solve(), returning rhs . x (preconditioned conjugate gradients need both) from the same
+  /// pass; the sum's order depends on neither the thread count nor the run.
+  double solveDot(const RightHandSides& rhs, RightHandSides& x) const;
 
   /// Nonzero 4x4 blocks of the factor, diagonal ones included.
   Eigen::Index blockCount() const;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -93,21 +94,32 @@ struct Quadratic
     times(X, out);
     return out;
   }
-  void times(const Unknowns& X, Unknowns& out) const
+  void times(const Unknowns& X, Unknowns& out) const { timesDot(X, out); }
+  /// out = H X, and returns X . out (the conjugate gradients' curvature) from the same pass.
+  double timesDot(const Unknowns& X, Unknowns& out) const
   {
     out.resize(X.rows(), 3);
     const int n = static_cast<int>(diagonal.size());
-    parallelFor(
-        0, n,
-        [&](int i)
-        {
-          Eigen::Matrix<double, 4, 3> sum = Eigen::Matrix<double, 4, 3>::Zero();
-          for (int k = (*neighbourStart)[i]; k < (*neighbourStart)[i + 1]; ++k)
-            sum += X.middleRows<4>(4 * static_cast<Eigen::Index>((*neighbours)[k]));
-          out.middleRows<4>(4 * static_cast<Eigen::Index>(i)) =
-              diagonal[i] * X.middleRows<4>(4 * static_cast<Eigen::Index>(i)) - edgeWeight * sum;
-        },
-        1024);
+    double partial[kSpans];
+    forSpans(n,
+             [&](Eigen::Index from, Eigen::Index to, int span)
+             {
+               double dot = 0;
+               for (Eigen::Index i = from; i < to; ++i)
+               {
+                 Eigen::Matrix<double, 4, 3> sum = Eigen::Matrix<double, 4, 3>::Zero();
+                 for (int k = (*neighbourStart)[i]; k < (*neighbourStart)[i + 1]; ++k)
+                   sum += X.middleRows<4>(4 * static_cast<Eigen::Index>((*neighbours)[k]));
+                 const auto Xi = X.middleRows<4>(4 * i);
+                 const Eigen::Matrix<double, 4, 3> product = diagonal[i] * Xi - edgeWeight * sum;
+                 out.middleRows<4>(4 * i) = product;
+                 dot += (Xi.array() * product.array()).sum();
+               }
+               partial[span] = dot;
+             });
+    double dot = 0;
+    for (double p : partial) dot += p;
+    return dot;
   }
   double energy(const Unknowns& X) const { return dot(X, times(X)) - 2.0 * dot(X, R) + c; }
 };
@@ -225,26 +237,29 @@ struct TemplateFitter::Impl
     Unknowns& Hp = scratch[3];
     q.times(X, Hp);
     r.noalias() = q.R - Hp;
-    factor->solve(r, z);
+    double rz = factor->solveDot(r, z);
     p = z;
-    double rz = parallelDot(r, z);
     double rr = parallelDot(r, r);
     const Eigen::Index size = X.size();
     using Span = Eigen::Map<Eigen::VectorXd>;
     int step = 0;
+    // Passes over the vectors are fused where a step allows (memory, not arithmetic, is what
+    // they cost): H p with p . H p, the updates of X and r with r . r, z with r . z.
     for (; step < kMaxSteps && std::sqrt(rr) > target; ++step)
     {
-      q.times(p, Hp);
-      const double alpha = rz / parallelDot(p, Hp);
+      const double alpha = rz / q.timesDot(p, Hp);
+      double partial[kSpans];
       forSpans(size,
-               [&](Eigen::Index from, Eigen::Index to, int)
+               [&](Eigen::Index from, Eigen::Index to, int span)
                {
+                 Span rk(r.data() + from, to - from);
                  Span(X.data() + from, to - from) += alpha * Span(p.data() + from, to - from);
-                 Span(r.data() + from, to - from) -= alpha * Span(Hp.data() + from, to - from);
+                 rk -= alpha * Span(Hp.data() + from, to - from);
+                 partial[span] = rk.squaredNorm();
                });
-      factor->solve(r, z);
-      const double rzNext = parallelDot(r, z);
-      rr = parallelDot(r, r);
+      rr = 0;
+      for (double part : partial) rr += part;
+      const double rzNext = factor->solveDot(r, z);
       const double beta = rzNext / rz;
       forSpans(size,
                [&](Eigen::Index from, Eigen::Index to, int)
@@ -395,6 +410,8 @@ void checkOptions(const TemplateFitOptions& o)
     throw Error("Template fit: refactorSteps must be 0 or more.");
   if (o.nearestEvery < 1) throw Error("Template fit: nearestEvery must be at least 1.");
   if (!(o.maxNearestDistance > 0)) throw Error("Template fit: maxNearestDistance must be > 0.");
+  if (!(o.nearestReuse >= 0) || !std::isfinite(o.nearestReuse))
+    throw Error("Template fit: nearestReuse must be 0 or more.");
   if (!(o.correspondenceOutlier >= 0))
     throw Error("Template fit: correspondenceOutlier must be >= 0.");
   if (!(o.maxNormalAngle > 0 && o.maxNormalAngle <= 180))
@@ -453,6 +470,9 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
   const Points frameNormals = faceNormals(frame);
   const double minCosine = std::cos(options_.maxNormalAngle * M_PI / 180.0);
   std::vector<int> hint(n, -1);
+  // Where each vertex was when its closest point was last searched for (nearestReuse).
+  constexpr double kFar = std::numeric_limits<double>::infinity();
+  Points searchedAt = Points::Constant(n, 3, kFar);
   std::vector<unsigned char> hasNearest(n, 0);
   Points nearest = Points::Zero(n, 3);
   TriangleMesh deformed;
@@ -468,6 +488,8 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
       p.row(i) = b.row(i) * maps.middleRows<4>(4 * static_cast<Eigen::Index>(i));
     return p;
   };
+  const double reuse2 = options_.nearestReuse * options_.nearestReuse;
+  std::atomic<int> searches{0};
   auto findNearest = [&](const Points& p)
   {
     deformed.V = p;
@@ -476,8 +498,29 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
                 [&](int i)
                 {
                   const Vec3 query = p.row(i).transpose() / scale + centroid;
-                  const SurfacePoint s =
-                      locator.closestPoint(query, options_.maxNearestDistance, hint[i]);
+                  SurfacePoint s;
+                  if (hint[i] >= 0 &&
+                      (query - searchedAt.row(i).transpose()).squaredNorm() < reuse2)
+                  {
+                    // Moved by d < nearestReuse since the search: that triangle is at most the
+                    // old distance + d away, no point of the frame is nearer than the old - d.
+                    const int f = hint[i];
+                    s.position = closestPointOnTriangle(query, frame.vertex(frame.F(f, 0)),
+                                                        frame.vertex(frame.F(f, 1)),
+                                                        frame.vertex(frame.F(f, 2)), s.bary);
+                    s.distance = (s.position - query).norm();
+                    if (s.distance <= options_.maxNearestDistance) s.face = f;
+                  }
+                  if (!s.valid())
+                  {
+                    s = locator.closestPoint(query, options_.maxNearestDistance, hint[i]);
+                    searches.fetch_add(1, std::memory_order_relaxed);
+                    // A failed search leaves the hint as it was: nothing to reuse.
+                    if (s.valid())
+                      searchedAt.row(i) = query.transpose();
+                    else
+                      searchedAt.row(i).setConstant(kFar);
+                  }
                   hasNearest[i] = 0;
                   if (!s.valid()) return;
                   hint[i] = s.face;
@@ -541,6 +584,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
       m.stale[stageIndex] = 1;
   }
   result.used = active;
+  result.nearestSearches = searches;
   result.positions = (positions(X) / scale).rowwise() + centroid.transpose();
   if (!result.positions.allFinite()) throw Error("Template fit: the solve diverged.");
   result.surfaceDistance.resize(n);

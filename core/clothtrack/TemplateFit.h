@@ -75,6 +75,11 @@ struct TemplateFitOptions
   double lengthScale = 1.0;
   double maxNearestDistance = 0.2; ///< metres
   double maxNormalAngle = 90.0;    ///< degrees
+  /// A vertex that moved less than this (metres) since its last closest-point search on the
+  /// frame keeps that search's triangle and is projected onto it: the point found is then at
+  /// most twice this much farther than the closest one. 0 searches for every vertex in every
+  /// round. The default saves a third of the searches on samba (BENCHMARKS.md).
+  double nearestReuse = 2e-4;
   /// Ablations: without Ec (the paper's Figure 6) or without Ed.
   bool useCorrespondence = true;
   bool useNearest = true;
@@ -101,6 +106,7 @@ struct FrameFit
   int rounds = 0;                  ///< minimisations run
   int iterations = 0;              ///< L-BFGS iterations, or conjugate-gradient steps
   int factorisations = 0;          ///< exact solver: Cholesky factorisations
+  int nearestSearches = 0;         ///< closest-point searches (the rest reused, nearestReuse)
   double energy = 0.0;             ///< E at the end of the last stage
   double seconds = 0.0;
 };

@@ -165,6 +165,7 @@ TEST(TemplateFit, LengthScaleIsTheUnitOfTheEnergy)
   scaled.lengthScale = 10.0;
   scaled.maxNearestDistance = metres.maxNearestDistance / 10;
   scaled.convergence = metres.convergence / 10;
+  scaled.nearestReuse = metres.nearestReuse / 10;
   TriangleMesh small = t, smallFrame = frame;
   small.V /= 10;
   smallFrame.V /= 10;
@@ -201,6 +202,9 @@ TEST(TemplateFit, RefusesBadInput)
   TemplateFitOptions negativeRefactor;
   negativeRefactor.refactorSteps = -1;
   EXPECT_THROW(TemplateFitter(t, negativeRefactor), Error);
+  TemplateFitOptions negativeReuse;
+  negativeReuse.nearestReuse = -1e-3;
+  EXPECT_THROW(TemplateFitter(t, negativeReuse), Error);
 
   const TemplateFitter fitter(t);
   Points nan = t.V;
@@ -294,4 +298,32 @@ TEST(TemplateFit, StaleFactorsAreRenewedWithoutChangingTheFit)
     EXPECT_LT(meanError(kept[k].positions, renewed[k].positions), 1e-4) << "frame " << k;
   }
   EXPECT_GT(renewedFactorisations, keptFactorisations);
+}
+
+TEST(TemplateFit, ReusedNearestPointsSaveSearchesWithoutChangingTheFit)
+{
+  const TriangleMesh t = limb();
+  std::vector<TriangleMesh> frames;
+  std::vector<VertexTargets> targets;
+  for (int k = 0; k < 4; ++k)
+  {
+    frames.push_back(moved(t, 0.1 * k, Vec3(0.01 * k, 0.0, 0.0)));
+    targets.push_back(everyNth(frames.back(), 5));
+  }
+  auto run = [&](double reuse)
+  {
+    TemplateFitOptions options;
+    options.nearestReuse = reuse;
+    return fitTemplateSequence(
+        frames[0], 0, 4, [&](int k) -> const TriangleMesh& { return frames[k]; },
+        [&](int k) -> const VertexTargets* { return &targets[k]; }, options);
+  };
+  const auto searched = run(0), reused = run(2e-4);
+  for (int k = 1; k < 4; ++k)
+  {
+    // Every vertex searched in every round with nearest points (three stages).
+    EXPECT_GE(searched[k].nearestSearches, 3 * t.numVertices()) << "frame " << k;
+    EXPECT_LT(reused[k].nearestSearches, searched[k].nearestSearches * 3 / 4) << "frame " << k;
+    EXPECT_LT(meanError(searched[k].positions, reused[k].positions), 2e-4) << "frame " << k;
+  }
 }
