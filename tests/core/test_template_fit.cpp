@@ -269,24 +269,34 @@ TEST(TemplateFit, SideBySideChainsFitAsOneThread)
   }
 }
 
-TEST(TemplateFit, StaleFactorsAreRenewedWithoutChangingTheFit)
+namespace
 {
-  // Frames that bend further and further from the first, whose factors precondition the rest.
+/// The limb bent and shifted a little more in each frame, fitted from frame 0 with `options`.
+std::vector<FrameFit> fitBendingLimb(int count, double bend, double shift,
+                                     const TemplateFitOptions& options)
+{
   const TriangleMesh t = limb();
   std::vector<TriangleMesh> frames;
   std::vector<VertexTargets> targets;
-  for (int k = 0; k < 6; ++k)
+  for (int k = 0; k < count; ++k)
   {
-    frames.push_back(moved(t, 0.15 * k, Vec3(0.02 * k, 0.0, 0.0)));
+    frames.push_back(moved(t, bend * k, Vec3(shift * k, 0.0, 0.0)));
     targets.push_back(everyNth(frames.back(), 5));
   }
+  return fitTemplateSequence(
+      frames[0], 0, count, [&](int k) -> const TriangleMesh& { return frames[k]; },
+      [&](int k) -> const VertexTargets* { return &targets[k]; }, options);
+}
+} // namespace
+
+TEST(TemplateFit, StaleFactorsAreRenewedWithoutChangingTheFit)
+{
+  // Frames that bend further and further from the first, whose factors precondition the rest.
   auto run = [&](double refactorSteps)
   {
     TemplateFitOptions options;
     options.refactorSteps = refactorSteps;
-    return fitTemplateSequence(
-        frames[0], 0, 6, [&](int k) -> const TriangleMesh& { return frames[k]; },
-        [&](int k) -> const VertexTargets* { return &targets[k]; }, options);
+    return fitBendingLimb(6, 0.15, 0.02, options);
   };
   const auto kept = run(0), renewed = run(0.5);
   int keptFactorisations = 0, renewedFactorisations = 0;
@@ -302,27 +312,18 @@ TEST(TemplateFit, StaleFactorsAreRenewedWithoutChangingTheFit)
 
 TEST(TemplateFit, ReusedNearestPointsSaveSearchesWithoutChangingTheFit)
 {
-  const TriangleMesh t = limb();
-  std::vector<TriangleMesh> frames;
-  std::vector<VertexTargets> targets;
-  for (int k = 0; k < 4; ++k)
-  {
-    frames.push_back(moved(t, 0.1 * k, Vec3(0.01 * k, 0.0, 0.0)));
-    targets.push_back(everyNth(frames.back(), 5));
-  }
+  const int vertices = limb().numVertices();
   auto run = [&](double reuse)
   {
     TemplateFitOptions options;
     options.nearestReuse = reuse;
-    return fitTemplateSequence(
-        frames[0], 0, 4, [&](int k) -> const TriangleMesh& { return frames[k]; },
-        [&](int k) -> const VertexTargets* { return &targets[k]; }, options);
+    return fitBendingLimb(4, 0.1, 0.01, options);
   };
   const auto searched = run(0), reused = run(2e-4);
   for (int k = 1; k < 4; ++k)
   {
     // Every vertex searched in every round with nearest points (three stages).
-    EXPECT_GE(searched[k].nearestSearches, 3 * t.numVertices()) << "frame " << k;
+    EXPECT_GE(searched[k].nearestSearches, 3 * vertices) << "frame " << k;
     EXPECT_LT(reused[k].nearestSearches, searched[k].nearestSearches * 3 / 4) << "frame " << k;
     EXPECT_LT(meanError(searched[k].positions, reused[k].positions), 2e-4) << "frame " << k;
   }
