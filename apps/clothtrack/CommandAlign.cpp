@@ -3,6 +3,7 @@
 //   OUT/metrics.json             timings, memory and, with --ground-truth, the errors
 //   OUT/work/                    intermediate results: a run that was stopped resumes from them
 #include "AlignCache.h"
+#include "BackgroundWriter.h"
 #include "BodyFitRun.h"
 #include "Commands.h"
 #include "ErrorMetrics.h"
@@ -478,6 +479,8 @@ int alignCommand(const Args& args, AlignMode mode)
     std::snprintf(name, sizeof(name), "frame_%04d.bin", frameNumber[k]);
     return (correspondenceDir / name).string();
   };
+  // Declared after everything its tasks refer to, so that it finishes before they go.
+  BackgroundWriter writer;
   auto alignFrame = [&](int k, const TemplateFitter& fitter)
   {
     if (fs::exists(alignedPath(k)))
@@ -523,20 +526,23 @@ int alignCommand(const Args& args, AlignMode mode)
       }
       toSurface[k] = surfaceDistance.mean(); // zero for the template on its own frame
       frameSeconds[k] = since(frameStart);
-      vtkSmartPointer<vtkPolyData> mesh = toPolyData(TriangleMesh{aligned[k], templ.F});
-      addArray(mesh, "Displacement", aligned[k] - templ.V);
-      addArray(mesh, "SurfaceDistance", surfaceDistance);
-      vtkNew<vtkUnsignedCharArray> usedArray;
-      usedArray->SetName("CorrespondenceUsed");
-      usedArray->SetNumberOfTuples(templ.numVertices());
-      for (int i = 0; i < templ.numVertices(); ++i) usedArray->SetValue(i, used[i]);
-      mesh->GetPointData()->AddArray(usedArray);
-      if (anchors)
-      {
-        errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
-        addArray(mesh, "Error", errors[k]);
-      }
-      writeCollectionFrame(alignedPvd, frameNumber[k], mesh, false);
+      if (anchors) errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
+      // The writer gets copies: the chain moves on to the next frame at once.
+      writer.submit(
+          [&templ, &alignedPvd, number = frameNumber[k], positions = aligned[k],
+           error = anchors ? errors[k] : Eigen::VectorXd(), surfaceDistance, used]()
+          {
+            vtkSmartPointer<vtkPolyData> mesh = toPolyData(TriangleMesh{positions, templ.F});
+            addArray(mesh, "Displacement", positions - templ.V);
+            addArray(mesh, "SurfaceDistance", surfaceDistance);
+            vtkNew<vtkUnsignedCharArray> usedArray;
+            usedArray->SetName("CorrespondenceUsed");
+            usedArray->SetNumberOfTuples(templ.numVertices());
+            for (int i = 0; i < templ.numVertices(); ++i) usedArray->SetValue(i, used[i]);
+            mesh->GetPointData()->AddArray(usedArray);
+            if (error.size() > 0) addArray(mesh, "Error", error);
+            writeCollectionFrame(alignedPvd, number, mesh, false);
+          });
     }
     else if (anchors)
       errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
@@ -622,6 +628,7 @@ int alignCommand(const Args& args, AlignMode mode)
     if (backwardThread.joinable()) backwardThread.join();
     if (backwardError) std::rethrow_exception(backwardError);
   }
+  writer.finish();
   alignProgress->finish();
   std::vector<std::pair<double, std::string>> entries;
   for (int k = 0; k < n; ++k)

@@ -139,6 +139,15 @@ expect_run(1 "--frames must be A:B" align ${WORK}/synth/frames --frames 3 -o ${W
 expect_run(1 "selects no frame" align ${WORK}/synth/frames --frames 4:2 -o ${WORK}/x)
 expect_run(1 "--solver-tolerance and --intermediate-tolerance must be in (0, 1)" align ${WORK}/synth/frames -o ${WORK}/x --intermediate-tolerance 0)
 expect_run(1 "--refactor-steps must be 0 or more" align ${WORK}/synth/frames -o ${WORK}/x --refactor-steps -1)
+expect_run(1 "--nearest-reuse must be 0 or more" align ${WORK}/synth/frames -o ${WORK}/x --nearest-reuse -0.001)
+# Aligned frames are written in the background: a failed write still ends the run with its error.
+# (A run with the same options first, so that the second resumes in the folder as it is.)
+set(blocked_run fit ${WORK}/synth/frames --frames 0:3 --work ${WORK}/staged/work -o ${WORK}/blocked
+  --no-report)
+expect_run(0 "aligned 3 frames" ${blocked_run})
+file(REMOVE_RECURSE ${WORK}/blocked/aligned)
+file(WRITE ${WORK}/blocked/aligned "a file where the aligned frames' folder should be")
+expect_run(1 "blocked/aligned: cannot create folder" ${blocked_run})
 expect_run(1 "--solver must be" align ${WORK}/synth/frames --solver magic -o ${WORK}/x)
 expect_run(1 "is out of range" align ${WORK}/synth/frames --template 9 -o ${WORK}/x)
 expect_run(1 "at least two readable frames" align ${WORK}/synth/frames --frames 2:3 -o ${WORK}/x)
