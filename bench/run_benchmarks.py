@@ -77,7 +77,10 @@ class Bench:
             log("align %s: reused" % name)
         else:
             log("align %s" % name)
-            shutil.rmtree(out / "aligned", ignore_errors=True)
+            # A run of its own starts from nothing: the work folder of an earlier benchmark would
+            # let the app reuse its landmarks and correspondences, and the stage times would read 0.
+            # Runs given another run's work folder share it on purpose (that run made it just now).
+            shutil.rmtree(out if work is None else out / "aligned", ignore_errors=True)
             args = ["align", frames, "-o", out, "--no-report"]
             if truth:
                 args += ["--ground-truth", truth]
