@@ -495,7 +495,8 @@ int alignCommand(const Args& args, AlignMode mode)
     Eigen::Matrix<unsigned char, Eigen::Dynamic, 1> used =
         Eigen::Matrix<unsigned char, Eigen::Dynamic, 1>::Zero(templ.numVertices());
     Eigen::VectorXd surfaceDistance = Eigen::VectorXd::Zero(templ.numVertices());
-    if (aligned[k].rows() == 0)
+    const bool fitNow = aligned[k].rows() == 0; // not resumed from an earlier run
+    if (fitNow)
     {
       const auto frameStart = Clock::now();
       if (k == j)
@@ -526,11 +527,13 @@ int alignCommand(const Args& args, AlignMode mode)
       }
       toSurface[k] = surfaceDistance.mean(); // zero for the template on its own frame
       frameSeconds[k] = since(frameStart);
-      if (anchors) errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
+    }
+    if (anchors) errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
+    if (fitNow)
       // The writer gets copies: the chain moves on to the next frame at once.
       writer.submit(
           [&templ, &alignedPvd, number = frameNumber[k], positions = aligned[k],
-           error = anchors ? errors[k] : Eigen::VectorXd(), surfaceDistance, used]()
+           error = errors[k], surfaceDistance, used]()
           {
             vtkSmartPointer<vtkPolyData> mesh = toPolyData(TriangleMesh{positions, templ.F});
             addArray(mesh, "Displacement", positions - templ.V);
@@ -543,9 +546,6 @@ int alignCommand(const Args& args, AlignMode mode)
             if (error.size() > 0) addArray(mesh, "Error", error);
             writeCollectionFrame(alignedPvd, number, mesh, false);
           });
-    }
-    else if (anchors)
-      errors[k] = vertexErrors(aligned[k], truth[k], *anchors);
     const std::lock_guard<std::mutex> lock(progressMutex);
     alignProgress->step(++done);
   };

@@ -354,29 +354,23 @@ double BlockCholesky::solveDot(const RightHandSides& rhs, RightHandSides& x) con
   parallelFor(
       0, parts, [&](int p) { run(kernel.backward, m.partColumns[p]); }, 1);
   x.resize(n, 3);
-  constexpr int kSpans = 16;
-  double partial[kSpans];
-  parallelFor(
-      0, kSpans,
-      [&](int span)
-      {
-        double dot = 0;
-        for (int J = m.blocks * span / kSpans; J < m.blocks * (span + 1) / kSpans; ++J)
-          for (int r = 0; r < 4; ++r)
-          {
-            const int row = original[4 * J + r];
-            for (int c = 0; c < 3; ++c)
-            {
-              const double value = y[3 * static_cast<size_t>(J) + c].v[r];
-              x(row, c) = value;
-              dot += rhs(row, c) * value;
-            }
-          }
-        partial[span] = dot;
-      },
-      1);
-  double dot = 0;
-  for (double p : partial) dot += p;
-  return dot;
+  // The scatter back to the original order gives rhs . x on the way.
+  return parallelSum(m.blocks,
+                     [&](long from, long to)
+                     {
+                       double dot = 0;
+                       for (long J = from; J < to; ++J)
+                         for (int r = 0; r < 4; ++r)
+                         {
+                           const int row = original[4 * J + r];
+                           for (int c = 0; c < 3; ++c)
+                           {
+                             const double value = y[3 * J + c].v[r];
+                             x(row, c) = value;
+                             dot += rhs(row, c) * value;
+                           }
+                         }
+                       return dot;
+                     });
 }
 } // namespace clothtrack

@@ -39,4 +39,27 @@ template <class Body> void parallelFor(int begin, int end, const Body& body, int
                       for (int i = from; i < to; ++i) body(i);
                     });
 }
+
+/// Parts of the fixed split of forSpans and parallelSum.
+constexpr int kFixedSpans = 16;
+
+/// body(from, to, span) over a fixed split of [0, size) into kFixedSpans spans, in parallel.
+/// The split does not depend on the thread count, so per-span results summed in span order
+/// (parallelSum) are the same for any number of threads.
+template <class Body> void forSpans(long size, const Body& body)
+{
+  parallelFor(
+      0, kFixedSpans, [&](int k) { body(size * k / kFixedSpans, size * (k + 1) / kFixedSpans, k); },
+      1);
+}
+
+/// Sum of body(from, to) (a double) over the spans of forSpans, added in span order.
+template <class Body> double parallelSum(long size, const Body& body)
+{
+  double partial[kFixedSpans];
+  forSpans(size, [&](long from, long to, int k) { partial[k] = body(from, to); });
+  double sum = 0;
+  for (double p : partial) sum += p;
+  return sum;
+}
 } // namespace clothtrack

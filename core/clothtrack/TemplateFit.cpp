@@ -45,30 +45,17 @@ double dot(const Unknowns& a, const Unknowns& b)
   return (a.array() * b.array()).sum();
 }
 
-/// Runs body(from, to, k) over a fixed split of [0, size) into kSpans spans, in parallel; sums
-/// taken span by span and added in order do not depend on the thread count.
-constexpr int kSpans = 16;
-template <class Body> void forSpans(Eigen::Index size, const Body& body)
-{
-  parallelFor(
-      0, kSpans, [&](int k) { body(size * k / kSpans, size * (k + 1) / kSpans, k); }, 1);
-}
-
-/// a . b, in parallel.
+/// a . b, in parallel (the same sum for any thread count).
 double parallelDot(const Unknowns& a, const Unknowns& b)
 {
-  double partial[kSpans];
   const double* x = a.data();
   const double* y = b.data();
-  forSpans(a.size(),
-           [&](Eigen::Index from, Eigen::Index to, int k)
-           {
-             partial[k] = Eigen::Map<const Eigen::VectorXd>(x + from, to - from)
-                              .dot(Eigen::Map<const Eigen::VectorXd>(y + from, to - from));
-           });
-  double sum = 0;
-  for (double p : partial) sum += p;
-  return sum;
+  return parallelSum(a.size(),
+                     [&](long from, long to)
+                     {
+                       return Eigen::Map<const Eigen::VectorXd>(x + from, to - from)
+                           .dot(Eigen::Map<const Eigen::VectorXd>(y + from, to - from));
+                     });
 }
 
 double seconds(std::chrono::steady_clock::time_point since)
@@ -100,26 +87,24 @@ struct Quadratic
   {
     out.resize(X.rows(), 3);
     const int n = static_cast<int>(diagonal.size());
-    double partial[kSpans];
-    forSpans(n,
-             [&](Eigen::Index from, Eigen::Index to, int span)
-             {
-               double dot = 0;
-               for (Eigen::Index i = from; i < to; ++i)
-               {
-                 Eigen::Matrix<double, 4, 3> sum = Eigen::Matrix<double, 4, 3>::Zero();
-                 for (int k = (*neighbourStart)[i]; k < (*neighbourStart)[i + 1]; ++k)
-                   sum += X.middleRows<4>(4 * static_cast<Eigen::Index>((*neighbours)[k]));
-                 const auto Xi = X.middleRows<4>(4 * i);
-                 const Eigen::Matrix<double, 4, 3> product = diagonal[i] * Xi - edgeWeight * sum;
-                 out.middleRows<4>(4 * i) = product;
-                 dot += (Xi.array() * product.array()).sum();
-               }
-               partial[span] = dot;
-             });
-    double dot = 0;
-    for (double p : partial) dot += p;
-    return dot;
+    return parallelSum(n,
+                       [&](long from, long to)
+                       {
+                         double dot = 0;
+                         for (long i = from; i < to; ++i)
+                         {
+                           Eigen::Matrix<double, 4, 3> sum = Eigen::Matrix<double, 4, 3>::Zero();
+                           for (int k = (*neighbourStart)[i]; k < (*neighbourStart)[i + 1]; ++k)
+                             sum +=
+                                 X.middleRows<4>(4 * static_cast<Eigen::Index>((*neighbours)[k]));
+                           const auto Xi = X.middleRows<4>(4 * i);
+                           const Eigen::Matrix<double, 4, 3> product =
+                               diagonal[i] * Xi - edgeWeight * sum;
+                           out.middleRows<4>(4 * i) = product;
+                           dot += (Xi.array() * product.array()).sum();
+                         }
+                         return dot;
+                       });
   }
   double energy(const Unknowns& X) const { return dot(X, times(X)) - 2.0 * dot(X, R) + c; }
 };
@@ -248,21 +233,19 @@ struct TemplateFitter::Impl
     for (; step < kMaxSteps && std::sqrt(rr) > target; ++step)
     {
       const double alpha = rz / q.timesDot(p, Hp);
-      double partial[kSpans];
-      forSpans(size,
-               [&](Eigen::Index from, Eigen::Index to, int span)
-               {
-                 Span rk(r.data() + from, to - from);
-                 Span(X.data() + from, to - from) += alpha * Span(p.data() + from, to - from);
-                 rk -= alpha * Span(Hp.data() + from, to - from);
-                 partial[span] = rk.squaredNorm();
-               });
-      rr = 0;
-      for (double part : partial) rr += part;
+      rr = parallelSum(size,
+                       [&](long from, long to)
+                       {
+                         Span rk(r.data() + from, to - from);
+                         Span(X.data() + from, to - from) +=
+                             alpha * Span(p.data() + from, to - from);
+                         rk -= alpha * Span(Hp.data() + from, to - from);
+                         return rk.squaredNorm();
+                       });
       const double rzNext = factor->solveDot(r, z);
       const double beta = rzNext / rz;
       forSpans(size,
-               [&](Eigen::Index from, Eigen::Index to, int)
+               [&](long from, long to, int)
                {
                  Span pk(p.data() + from, to - from);
                  pk = Span(z.data() + from, to - from) + beta * pk;

@@ -7,6 +7,19 @@
 
 namespace clothtrack
 {
+namespace
+{
+/// Each row scaled to unit length; zero rows stay zero.
+void normaliseRows(Points& rows)
+{
+  for (Eigen::Index i = 0; i < rows.rows(); ++i)
+  {
+    const double length = rows.row(i).norm();
+    if (length > 0) rows.row(i) /= length;
+  }
+}
+} // namespace
+
 Eigen::VectorXd faceAreas(const TriangleMesh& mesh)
 {
   Eigen::VectorXd areas(mesh.numFaces());
@@ -60,11 +73,7 @@ Points vertexNormals(const TriangleMesh& mesh)
   for (int f = 0; f < mesh.numFaces(); ++f)
     for (int k = 0; k < 3; ++k)
       if (angles(f, k) != 0) normals.row(mesh.F(f, k)) += angles(f, k) * fn.row(f);
-  for (int i = 0; i < mesh.numVertices(); ++i)
-  {
-    const double len = normals.row(i).norm();
-    if (len > 0) normals.row(i) /= len;
-  }
+  normaliseRows(normals);
   return normals;
 }
 
@@ -78,11 +87,7 @@ Points areaWeightedVertexNormals(const TriangleMesh& mesh)
     const Vec3 n = (mesh.vertex(mesh.F(f, 1)) - a).cross(mesh.vertex(mesh.F(f, 2)) - a);
     for (int k = 0; k < 3; ++k) normals.row(mesh.F(f, k)) += n.transpose();
   }
-  for (int i = 0; i < mesh.numVertices(); ++i)
-  {
-    const double len = normals.row(i).norm();
-    if (len > 0) normals.row(i) /= len;
-  }
+  normaliseRows(normals);
   return normals;
 }
 
