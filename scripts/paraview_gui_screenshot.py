@@ -11,6 +11,7 @@ scripts/paraview_filters_menu.xml, which opens Filters > ClothTrack), waits, and
 framebuffer (XWD) to PNG.
 """
 import argparse
+import importlib.util
 import os
 import shutil
 import struct
@@ -20,6 +21,13 @@ import tempfile
 import time
 
 from PIL import Image
+
+# The package's virtual display, loaded by path: the package itself needs the built VTK modules.
+_spec = importlib.util.spec_from_file_location(
+    "virtual_display", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python_wrapping",
+                                    "clothtrack", "virtual_display.py"))
+virtual_display = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(virtual_display)
 
 
 def read_xwd(path):
@@ -49,11 +57,8 @@ def main():
         if not shutil.which(tool):
             sys.exit("paraview_gui_screenshot: %s is not installed" % tool)
     with tempfile.TemporaryDirectory() as fbdir:
-        display = ":%d" % (90 + os.getpid() % 100)
-        xvfb = subprocess.Popen(["Xvfb", display, "-screen", "0", args.size + "x24", "-fbdir", fbdir, "-nolisten", "tcp"],
-                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        try:
-            time.sleep(2)
+        with virtual_display.VirtualDisplay(args.size, ["-fbdir", fbdir]) as xvfb:
+            display = xvfb.display
             # Default settings (--dr), and a private home so that the user's own are left alone. A
             # warning opens the message window over the view: use data that reads without one.
             home = os.path.join(fbdir, "home")
@@ -74,9 +79,6 @@ def main():
             read_xwd(os.path.join(fbdir, "Xvfb_screen0")).save(args.out)
             gui.terminate()
             gui.wait(10)
-        finally:
-            xvfb.terminate()
-            xvfb.wait(10)
     print("wrote", args.out)
 
 

@@ -1,7 +1,7 @@
 // clothtrack report: plots, renders and report.html for the output folder of 'clothtrack align';
 // clothtrack render: the same, plus a movie of the aligned sequence (PNG frames, MP4 with ffmpeg).
-// The Python package draws them (matplotlib and VTK); without an X display it runs under a
-// virtual one (xvfb-run).
+// The Python package draws them (matplotlib and VTK); without an X display it starts a virtual
+// one of its own (Xvfb).
 #include "Commands.h"
 #include "Options.h"
 #include "Report.h"

@@ -52,16 +52,11 @@ void runPackageModule(const std::string& module, const std::string& folder,
   if (!std::filesystem::is_regular_file(std::filesystem::path(folder) / "metrics.json"))
     throw UsageError{folder + ": no metrics.json (run 'clothtrack align' first)"};
   const std::string python = CLOTHTRACK_PYTHON_EXECUTABLE;
-  std::vector<std::string> command;
+  // Without a display the module renders on a virtual one of its own (clothtrack.virtual_display).
   const char* display = std::getenv("DISPLAY");
-  if (!display || !*display)
-  {
-    if (!onPath("xvfb-run"))
-      throw UsageError{"renders need an X display or xvfb-run (Debian: xvfb)"};
-    command = {"xvfb-run", "-a", "-s", "-screen 0 1280x800x24"};
-  }
-  for (const std::string& part : {python, std::string("-m"), module, folder})
-    command.push_back(part);
+  if ((!display || !*display) && !onPath("Xvfb"))
+    throw UsageError{"renders need an X display or Xvfb (Debian package: xvfb)"};
+  std::vector<std::string> command{python, "-m", module, folder};
   command.insert(command.end(), options.begin(), options.end());
 
   const std::string pythonPath = packageDirectory();

@@ -8,7 +8,7 @@ frames/ folder that `clothtrack synth` writes) and GT a ground-truth sequence wi
 (the ground_truth/ folder of `clothtrack synth`). OUT receives screenshots of the aligned template
 (coloured by error with a ground truth, by distance to the frame's surface without) at the first,
 middle and last frames and, with --state, a ParaView state file to open in the GUI. Without a display,
-run it under `xvfb-run -a -s "-screen 0 1024x768x24"`.
+run it under a virtual one: `python3 python_wrapping/clothtrack/virtual_display.py -- pvpython ...`.
 
 The pipeline, as in the GUI's ClothTrack menu:
     Sequence Reader -> Body Fit -> Patch Correspondence -> Template Fit -> (Alignment Error) -> Play Sequence

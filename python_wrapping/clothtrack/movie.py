@@ -2,8 +2,8 @@
 distance to the frame without a ground truth), seen by a fixed camera; or a turntable of one frame.
 
 usage: python3 -m clothtrack.movie OUT [--turntable FRAME] [--size WxH] [--fps FPS]
-(OUT is the output folder of `clothtrack align`; needs an X display: `clothtrack render OUT` starts a
-virtual one when there is none)
+(OUT is the output folder of `clothtrack align`; renders on the X display, or on a virtual one of its
+own when there is none)
 
 Writes OUT/movie/movie_NNNN.png and, when ffmpeg is installed, OUT/movie.mp4.
 """
@@ -14,6 +14,8 @@ import shutil
 import subprocess
 import sys
 from pathlib import Path
+
+from .virtual_display import VirtualDisplayError, ensure_display
 
 
 def _read(path):
@@ -128,8 +130,9 @@ def main(argv):
     args = parser.parse_args(argv[1:])
     try:
         width, height = (int(v) for v in args.size.split("x"))
-        written, mp4 = write_movie(args.folder, (width, height), args.fps, args.turntable)
-    except (OSError, KeyError, ValueError, subprocess.CalledProcessError) as error:
+        with ensure_display():
+            written, mp4 = write_movie(args.folder, (width, height), args.fps, args.turntable)
+    except (OSError, KeyError, ValueError, subprocess.CalledProcessError, VirtualDisplayError) as error:
         print("clothtrack movie: %s" % error, file=sys.stderr)
         return 1
     print("wrote %d frames in %s" % (len(written), Path(args.folder) / "movie"))

@@ -1,4 +1,5 @@
-"""Offscreen rendering helpers (VTK needs an X display here: run under xvfb-run when there is none)."""
+"""Offscreen rendering helpers (VTK needs an X display here: without one, render inside
+clothtrack.virtual_display.ensure_display())."""
 
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkWindowToImageFilter

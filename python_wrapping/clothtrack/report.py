@@ -1,7 +1,7 @@
 """The report of an aligned sequence: plots, renders and an HTML page beside `clothtrack align`'s output.
 
 usage: python3 -m clothtrack.report OUT   (OUT holds metrics.json and aligned.pvd; needs an X
-display for the renders: 'clothtrack report OUT' starts a virtual one when there is none)
+display for the renders; without one it starts a virtual one of its own)
 
 Writes OUT/images/per_frame_error.png, cumulative_error.png, frame_NNNN.png (input frame, template,
 result coloured by error), correspondence_NNNN.png (a colour field on the template carried to the frame),
@@ -12,6 +12,8 @@ import json
 import os
 import sys
 from pathlib import Path
+
+from .virtual_display import VirtualDisplayError, ensure_display
 
 
 def _plots(metrics, images):
@@ -305,8 +307,9 @@ def main(argv):
         print(__doc__.strip())
         return 0 if len(argv) == 2 else 1
     try:
-        path = write_report(argv[1])
-    except (OSError, KeyError, ValueError) as error:
+        with ensure_display():
+            path = write_report(argv[1])
+    except (OSError, KeyError, ValueError, VirtualDisplayError) as error:
         print("clothtrack report: %s" % error, file=sys.stderr)
         return 1
     print("wrote", path)

@@ -30,6 +30,12 @@ file(STRINGS ${WORK}/out/report.html body_links REGEX "images/body_")
 if (body_image_count LESS 3 OR NOT body_links)
   message(FATAL_ERROR "the report shows ${body_image_count} fitted-body images")
 endif ()
+# Without a display the report starts a virtual one; with no Xvfb either it says what to install.
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY PATH=${WORK}/empty ${APP} report ${WORK}/out
+  RESULT_VARIABLE code ERROR_VARIABLE err)
+if (NOT code EQUAL 1 OR NOT err MATCHES "^clothtrack report: renders need an X display or Xvfb")
+  message(FATAL_ERROR "report without display and Xvfb: exit ${code}\n${err}")
+endif ()
 # The template was chosen by pose: the frame whose fitted body is nearest the rest pose.
 read_metric(criterion template_criterion)
 if (NOT criterion STREQUAL "rest-pose")
