@@ -6,7 +6,9 @@
 //                                                         (e.g. samba) re-meshed by the capture
 //                                                         simulator; landmarks from the fitted body
 // CLOTHTRACK_EPSILON and CLOTHTRACK_MAX_SEED_OFFSET override eps and the largest landmark offset
-// from the body that seeds a patch (metres).
+// from the body that seeds a patch (metres); CLOTHTRACK_MIN_CONSENSUS (0: off),
+// CLOTHTRACK_CONSENSUS_TOLERANCE, CLOTHTRACK_CONSENSUS_RELATIVE and CLOTHTRACK_CONSENSUS_RADIUS the
+// seed consensus. CLOTHTRACK_BENCH_VERBOSE=1 prints every seed and patch of the last frame.
 // The template frame is chosen automatically. Error of a template vertex t in frame k: distance
 // from f(t) to the ground-truth position of t's source point (the true surface point the
 // template vertex was captured from) in frame k; vertices more than 3 cm from any true surface
@@ -64,6 +66,14 @@ int evaluate(Sequence& s)
   if (const char* eps = std::getenv("CLOTHTRACK_EPSILON")) options.epsilon = std::atof(eps);
   if (const char* offset = std::getenv("CLOTHTRACK_MAX_SEED_OFFSET"))
     options.maxSeedOffset = std::atof(offset);
+  if (const char* consensus = std::getenv("CLOTHTRACK_MIN_CONSENSUS"))
+    options.minConsensus = std::atof(consensus);
+  if (const char* v = std::getenv("CLOTHTRACK_CONSENSUS_RELATIVE"))
+    options.consensusRelative = std::atof(v);
+  if (const char* v = std::getenv("CLOTHTRACK_CONSENSUS_TOLERANCE"))
+    options.consensusTolerance = std::atof(v);
+  if (const char* v = std::getenv("CLOTHTRACK_CONSENSUS_RADIUS"))
+    options.consensusRadius = std::atof(v);
   const TemplatePatches patches(templ, s.landmarks[j], options);
   std::printf("eps %.3f m, tau_s %.2f m, tau_d %.2f m, seeds within %.2f m of the body\n",
               options.epsilon, options.minRadius, options.maxRadius, options.maxSeedOffset);
@@ -107,9 +117,9 @@ int evaluate(Sequence& s)
           ++e.second;
         }
       for (const auto& p : c.patches)
-        std::printf("frame %zu landmark %2d: radius %.2f, %d vertices, %d inconsistent, "
-                    "mean error of its nearest vertices %.2f cm\n",
-                    k, p.landmarkId, p.radius, p.vertices, p.inconsistent,
+        std::printf("frame %zu landmark %2d: consensus %.2f, radius %.2f, %d vertices, %d "
+                    "inconsistent, mean error of its nearest vertices %.2f cm\n",
+                    k, p.landmarkId, p.consensus, p.radius, p.vertices, p.inconsistent,
                     byPatch.count(p.landmarkId)
                         ? 100 * byPatch[p.landmarkId].first / byPatch[p.landmarkId].second
                         : 0.0);

@@ -137,6 +137,10 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
     options.maxRadius = this->MaximumRadius;
     options.anchors = this->NumberOfAnchors;
     options.maxSeedOffset = this->MaximumSeedOffset;
+    options.minConsensus = this->MinimumSeedConsensus;
+    options.consensusRadius = this->SeedConsensusRadius;
+    options.consensusTolerance = this->SeedConsensusTolerance;
+    options.consensusRelative = this->SeedConsensusRelativeTolerance;
     const TemplatePatches patches(templateMesh, templateLandmarks, options);
 
     auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
@@ -146,12 +150,13 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
     auto matchedColumn = namedArray<vtkDoubleArray>("MatchedFraction");
     auto keptColumn = namedArray<vtkIntArray>("PatchesKept");
     auto pairsColumn = namedArray<vtkIntArray>("LandmarkPairs");
+    auto outvotedColumn = namedArray<vtkIntArray>("SeedsOutvoted");
     auto secondsColumn = namedArray<vtkDoubleArray>("Seconds");
     for (int k = 0; k < n && !this->GetAbortExecute(); ++k)
     {
       const auto start = std::chrono::steady_clock::now();
       FrameCorrespondence c;
-      int pairs = 0, kept = 0;
+      int pairs = 0, kept = 0, outvoted = 0;
       if (k == chosen)
       {
         // The template maps to itself.
@@ -174,7 +179,7 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
           vtkWarningMacro(<< "patch correspondence: " << frameName(sequence->GetBlock(k), k)
                           << " has no landmark; no vertex is matched");
         c = patches.correspond(frame, landmarks);
-        for (const auto& p : c.patches) kept += p.kept;
+        for (const auto& p : c.patches) kept += p.kept, outvoted += p.outvoted;
         for (const auto& t : templateLandmarks)
           pairs += std::any_of(landmarks.begin(), landmarks.end(),
                                [&](const OrientedSurfacePoint& l) { return l.id == t.id; });
@@ -191,6 +196,7 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
       matchedColumn->InsertNextValue(c.matchedFraction());
       keptColumn->InsertNextValue(kept);
       pairsColumn->InsertNextValue(pairs);
+      outvotedColumn->InsertNextValue(outvoted);
       secondsColumn->InsertNextValue(
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       this->UpdateProgress(0.05 + 0.95 * (k + 1) / n);
@@ -199,6 +205,7 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
          {static_cast<vtkAbstractArray*>(frameColumn),
           static_cast<vtkAbstractArray*>(matchedColumn), static_cast<vtkAbstractArray*>(keptColumn),
           static_cast<vtkAbstractArray*>(pairsColumn),
+          static_cast<vtkAbstractArray*>(outvotedColumn),
           static_cast<vtkAbstractArray*>(secondsColumn)})
       table->AddColumn(column);
   }
@@ -218,5 +225,10 @@ void ctPatchCorrespondence::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumRadius: " << this->MaximumRadius << "\n";
   os << indent << "NumberOfAnchors: " << this->NumberOfAnchors << "\n";
   os << indent << "MaximumSeedOffset: " << this->MaximumSeedOffset << "\n";
+  os << indent << "MinimumSeedConsensus: " << this->MinimumSeedConsensus << "\n";
+  os << indent << "SeedConsensusRadius: " << this->SeedConsensusRadius << "\n";
+  os << indent << "SeedConsensusTolerance: " << this->SeedConsensusTolerance << "\n";
+  os << indent << "SeedConsensusRelativeTolerance: " << this->SeedConsensusRelativeTolerance
+     << "\n";
   os << indent << "TemplateFrame: " << this->TemplateFrame << "\n";
 }

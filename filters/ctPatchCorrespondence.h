@@ -17,7 +17,10 @@
  * kept where the map is near-isometric (geodesic distances to the seed and to anchor points
  * differ by at most Epsilon) and grown from the seed through kept vertices; patches smaller
  * than MinimumRadius (tau_s) are dropped. Landmarks further than MaximumSeedOffset from the body
- * (their Offset array) seed no patch. See clothtrack/PatchCorrespondence.h for the method
+ * (their Offset array) seed no patch, nor do seeds whose geodesic distances to the other seeds
+ * within SeedConsensusRadius differ from the template's (by more than SeedConsensusTolerance +
+ * SeedConsensusRelativeTolerance times the distance) for more than 1 - MinimumSeedConsensus of
+ * them: a landmark misplaced as a whole. See clothtrack/PatchCorrespondence.h for the method
  * and the merge of overlapping patches. Defaults are the paper's (section 4.4).
  *
  * Output port 0: vtkMultiBlockDataSet, one copy of the template per frame with point data
@@ -26,7 +29,7 @@
  * PatchId (landmark id of the nearest assignment's patch); field data FrameIndex,
  * TemplateFrame and MatchedFraction. The template frame maps to itself.
  * Output port 1: vtkTable, one row per frame: Frame, MatchedFraction, PatchesKept,
- * LandmarkPairs, Seconds.
+ * LandmarkPairs, SeedsOutvoted, Seconds.
  *
  * Frames are processed one after the other, the patches of a frame in parallel; memory besides
  * the output does not grow with the sequence. A frame without landmarks gets no match and a
@@ -64,6 +67,18 @@ public:
   /// slides over the body, so they are not the same cloth point in every frame.
   vtkSetClampMacro(MaximumSeedOffset, double, 0.0, 100.0);
   vtkGetMacro(MaximumSeedOffset, double);
+  /// Share of the nearby seeds a seed must agree with to grow a patch (0: no vote).
+  vtkSetClampMacro(MinimumSeedConsensus, double, 0.0, 1.0);
+  vtkGetMacro(MinimumSeedConsensus, double);
+  /// Seeds within this geodesic distance of a seed on the template vote on it (metres).
+  vtkSetClampMacro(SeedConsensusRadius, double, 0.01, 100.0);
+  vtkGetMacro(SeedConsensusRadius, double);
+  /// Two seeds agree when their geodesic distances on the template and on the frame differ by
+  /// at most SeedConsensusTolerance (metres) + SeedConsensusRelativeTolerance * distance.
+  vtkSetClampMacro(SeedConsensusTolerance, double, 0.0, 10.0);
+  vtkGetMacro(SeedConsensusTolerance, double);
+  vtkSetClampMacro(SeedConsensusRelativeTolerance, double, 0.0, 10.0);
+  vtkGetMacro(SeedConsensusRelativeTolerance, double);
   /// Automatic choice, last criterion: 0 area ratio (the paper's), 1 rest pose (default).
   vtkSetClampMacro(TemplateCriterion, int, 0, 1);
   vtkGetMacro(TemplateCriterion, int);
@@ -93,6 +108,10 @@ private:
   double MaximumRadius = 0.25;
   int NumberOfAnchors = 6;
   double MaximumSeedOffset = 0.03;
+  double MinimumSeedConsensus = 0.7;
+  double SeedConsensusRadius = 1.0;
+  double SeedConsensusTolerance = 0.03;
+  double SeedConsensusRelativeTolerance = 0.08;
   int TemplateCriterion = 1;
   int TemplateFrame = -1;
   int ChosenFrame = -1;

@@ -219,6 +219,9 @@ int alignCommand(const Args& args, AlignMode mode)
       "patch radius tau_d (m)")("min-radius",
                                 po::value(&patches.minRadius)->default_value(patches.minRadius),
                                 "smallest patch kept, tau_s (m)")(
+      "seed-consensus", po::value(&patches.minConsensus)->default_value(patches.minConsensus),
+      "share of the nearby landmarks whose geodesic distances a landmark pair must preserve to "
+      "seed a patch (0: every pair seeds one)")(
       "predict-radius", po::value(&predictRadius)->default_value(predictRadius),
       "each frame's fit starts from its neighbour's moved by the landmarks' locally rigid motion, "
       "weighted over this radius (m; 0: from the neighbour's fit as it is)")(
@@ -254,6 +257,8 @@ int alignCommand(const Args& args, AlignMode mode)
   if (!stageSpec.empty()) fit.stages = parseStages(stageSpec);
   if (!(patches.epsilon > 0) || !(patches.minRadius >= 0) || !(patches.maxRadius > 0))
     throw UsageError{"--epsilon and --max-radius must be positive, --min-radius at least 0"};
+  if (!(patches.minConsensus >= 0 && patches.minConsensus <= 1))
+    throw UsageError{"--seed-consensus must be between 0 and 1"};
   if (!(truthDistance > 0)) throw UsageError{"--truth-distance must be positive"};
   if (!(predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
   if (!(fit.solverTolerance > 0 && fit.solverTolerance < 1) ||
@@ -421,7 +426,8 @@ int alignCommand(const Args& args, AlignMode mode)
   const nlohmann::json correspondenceKey = {
       {"landmarks", landmarkKey},
       {"template", j},
-      {"patches", {patches.epsilon, patches.minRadius, patches.maxRadius}}};
+      {"patches", {patches.epsilon, patches.minRadius, patches.maxRadius}},
+      {"seed_consensus", patches.minConsensus}};
   const fs::path correspondenceDir = work / "correspondence";
   if (!sameKey(correspondenceDir / "key.json", correspondenceKey))
   {
@@ -532,8 +538,8 @@ int alignCommand(const Args& args, AlignMode mode)
     if (fitNow)
       // The writer gets copies: the chain moves on to the next frame at once.
       writer.submit(
-          [&templ, &alignedPvd, number = frameNumber[k], positions = aligned[k],
-           error = errors[k], surfaceDistance, used]()
+          [&templ, &alignedPvd, number = frameNumber[k], positions = aligned[k], error = errors[k],
+           surfaceDistance, used]()
           {
             vtkSmartPointer<vtkPolyData> mesh = toPolyData(TriangleMesh{positions, templ.F});
             addArray(mesh, "Displacement", positions - templ.V);

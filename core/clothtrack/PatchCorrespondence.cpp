@@ -271,9 +271,80 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
         patches_[i] = std::move(patch);
       },
       1);
+  const int m = static_cast<int>(landmarks.size());
+  seedDistances_ = Eigen::MatrixXd::Constant(m, m, kInf);
+  if (options_.minConsensus > 0)
+    parallelFor(0, m,
+                [&](int i)
+                {
+                  std::vector<int> reached;
+                  const Eigen::VectorXd d = mapper.geodesic().distancesFromSeeds(
+                      seedsAtSurfacePoint(templateMesh, landmarks[i].face, landmarks[i].bary),
+                      options_.consensusRadius, reached);
+                  for (int j = 0; j < m; ++j)
+                    seedDistances_(i, j) =
+                        distanceAt(templateMesh, d, landmarks[j].face, landmarks[j].bary);
+                });
 }
 
 TemplatePatches::~TemplatePatches() = default;
+
+void TemplatePatches::voteOnSeeds(const TriangleMesh& frame, const ExponentialMapper& mapper,
+                                  const std::vector<const OrientedSurfacePoint*>& images,
+                                  std::vector<PatchSummary>& summaries) const
+{
+  const int m = static_cast<int>(images.size());
+  // Geodesic distances between the seeds' images on the frame, for the pairs that vote.
+  const double reach =
+      options_.consensusRadius * (1.0 + options_.consensusRelative) + options_.consensusTolerance;
+  Eigen::MatrixXd agree = Eigen::MatrixXd::Zero(m, m); // 1 agree, 0 disagree, -1 no vote
+  parallelFor(
+      0, m,
+      [&](int i)
+      {
+        agree.col(i).setConstant(-1);
+        if (!images[i]) return;
+        std::vector<int> reached;
+        const Eigen::VectorXd d = mapper.geodesic().distancesFromSeeds(
+            seedsAtSurfacePoint(frame, images[i]->face, images[i]->bary), reach, reached);
+        for (int j = 0; j < m; ++j)
+        {
+          const double dT = seedDistances_(i, j);
+          if (j == i || !images[j] || !std::isfinite(dT)) continue;
+          const double dS = distanceAt(frame, d, images[j]->face, images[j]->bary);
+          agree(j, i) =
+              std::abs(dS - dT) <= options_.consensusTolerance + options_.consensusRelative * dT;
+        }
+      },
+      1);
+  // Fast marching is not exactly symmetric: a pair agrees when both directions do.
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < i; ++j)
+      if (agree(i, j) >= 0 && agree(j, i) >= 0)
+        agree(i, j) = agree(j, i) = std::min(agree(i, j), agree(j, i));
+  // Drop the seed with the least consensus, one at a time, so that a misplaced seed does not
+  // cost a right one with few neighbours its vote.
+  std::vector<char> active(m);
+  for (int i = 0; i < m; ++i) active[i] = images[i] != nullptr;
+  for (;;)
+  {
+    int worst = -1;
+    for (int i = 0; i < m; ++i)
+    {
+      if (!active[i]) continue;
+      int voters = 0, agreeing = 0;
+      for (int j = 0; j < m; ++j)
+        if (active[j] && agree(i, j) >= 0) ++voters, agreeing += agree(i, j) > 0;
+      summaries[i].consensus = voters ? static_cast<double>(agreeing) / voters : -1.0;
+      if (voters >= 3 && summaries[i].consensus < options_.minConsensus &&
+          (worst < 0 || summaries[i].consensus < summaries[worst].consensus))
+        worst = i;
+    }
+    if (worst < 0) break;
+    summaries[worst].outvoted = true;
+    active[worst] = 0;
+  }
+}
 
 FrameCorrespondence
 TemplatePatches::correspond(const TriangleMesh& frame,
@@ -289,6 +360,20 @@ TemplatePatches::correspond(const TriangleMesh& frame,
   result.patches.resize(patches_.size());
   std::vector<std::vector<Assignment>> perPatch(patches_.size());
 
+  // The frame's image of each template seed (null when the frame lacks it or it lies off the
+  // body), and the seeds that disagree with the geodesic distances between the others.
+  const int m = static_cast<int>(patches_.size());
+  std::vector<const OrientedSurfacePoint*> images(m, nullptr);
+  for (int i = 0; i < m; ++i)
+  {
+    const auto image = std::find_if(frameLandmarks.begin(), frameLandmarks.end(),
+                                    [&](const OrientedSurfacePoint& l)
+                                    { return l.id == patches_[i]->landmark.id; });
+    if (image != frameLandmarks.end() && std::abs(image->offset) <= options_.maxSeedOffset &&
+        std::abs(patches_[i]->landmark.offset) <= options_.maxSeedOffset)
+      images[i] = &*image;
+  }
+  if (options_.minConsensus > 0) voteOnSeeds(frame, mapper, images, result.patches);
   parallelFor(
       0, static_cast<int>(patches_.size()),
       [&](int i)
@@ -296,13 +381,9 @@ TemplatePatches::correspond(const TriangleMesh& frame,
         const Patch& patch = *patches_[i];
         PatchSummary& summary = result.patches[i];
         summary.landmarkId = patch.landmark.id;
-        const auto image =
-            std::find_if(frameLandmarks.begin(), frameLandmarks.end(),
-                         [&](const OrientedSurfacePoint& l) { return l.id == patch.landmark.id; });
+        const OrientedSurfacePoint* image = images[i];
         const int n = static_cast<int>(patch.disc.vertices.size());
-        if (image == frameLandmarks.end() || n == 0 ||
-            std::abs(image->offset) > options_.maxSeedOffset)
-          return;
+        if (!image || n == 0 || summary.outvoted) return;
         PolarPatch chart;
         try
         {

@@ -45,15 +45,27 @@ struct PatchCorrespondenceOptions
   /// slides over the body, so a body landmark carried onto it is not the same cloth point from
   /// one frame to the next.
   double maxSeedOffset = 0.03;
+  /// Seed consensus. A body landmark misplaced on a frame (an arm posed wrongly under the
+  /// clothing) gives a patch that passes the near-isometry test yet is shifted as a whole. Two
+  /// seed pairs agree when their geodesic distance on the frame is that on the template within
+  /// consensusTolerance + consensusRelative * distance; the other seeds within consensusRadius
+  /// of a seed on the template vote, and a seed that agrees with less than minConsensus of at
+  /// least 3 voters grows no patch (minConsensus 0: every seed grows).
+  double minConsensus = 0.7;
+  double consensusRadius = 1.0;     ///< metres
+  double consensusTolerance = 0.03; ///< metres
+  double consensusRelative = 0.08;
 };
 
 struct PatchSummary
 {
   int landmarkId = -1;
-  int vertices = 0;     ///< template vertices the patch maps
-  double radius = 0.0;  ///< largest geodesic distance from the seed among them
-  int inconsistent = 0; ///< disc vertices that failed the near-isometry test
-  bool kept = false;    ///< radius >= tau_s
+  int vertices = 0;        ///< template vertices the patch maps
+  double radius = 0.0;     ///< largest geodesic distance from the seed among them
+  int inconsistent = 0;    ///< disc vertices that failed the near-isometry test
+  bool kept = false;       ///< radius >= tau_s
+  double consensus = -1.0; ///< share of the voting seeds it agrees with (-1: no vote)
+  bool outvoted = false;   ///< consensus below minConsensus: the seed grew no patch
 };
 
 /// Where one template vertex goes on the frame.
@@ -96,9 +108,15 @@ public:
 
 private:
   struct Patch;
+  /// Marks the seeds outvoted by the geodesic distances between the seeds (minConsensus).
+  void voteOnSeeds(const TriangleMesh& frame, const ExponentialMapper& mapper,
+                   const std::vector<const OrientedSurfacePoint*>& images,
+                   std::vector<PatchSummary>& summaries) const;
   const TriangleMesh& mesh_;
   PatchCorrespondenceOptions options_;
   std::vector<std::unique_ptr<Patch>> patches_;
+  /// Geodesic distances between the template's seeds (within consensusRadius; else infinite).
+  Eigen::MatrixXd seedDistances_;
 };
 
 /// Baseline: the template moved rigidly onto the frame (least squares over the paired landmark

@@ -162,6 +162,64 @@ TEST(PatchCorrespondence, MissingLandmarksAndSmallPatches)
   EXPECT_EQ(tooSmall.correspond(sphere, templateLandmarks).matchedFraction(), 0.0);
 }
 
+TEST(PatchCorrespondence, SeedConsensusDropsAMisplacedLandmark)
+{
+  // A landmark placed 30 cm from where it belongs on the frame (as a body posed wrongly under
+  // the clothing would place it): on a sphere its patch is as isometric as a right one, so only
+  // the geodesic distances to the other landmarks tell.
+  const TriangleMesh sphere = icosphere(4, 0.5);
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.4, Vec3(0, 1, 1).normalized()).toRotationMatrix();
+  const Vec3 move(0.1, 0.2, -0.3);
+  const MovedCopy copy = movedCopy(sphere, rotation, move);
+  const auto templateLandmarks = landmarksOn(sphere, 640); // 8 landmarks
+  auto frameLandmarks = landmarksOnCopy(templateLandmarks, copy, rotation);
+  const Vec3 truth =
+      rotation * surfacePosition(sphere, templateLandmarks[0].face, templateLandmarks[0].bary) +
+      move;
+  int misplaced = -1;
+  for (int f = 0; f < copy.mesh.numFaces(); ++f)
+  {
+    const double d = (surfacePosition(copy.mesh, f, Vec3::Constant(1.0 / 3)) - truth).norm();
+    if (std::abs(d - 0.3) < 0.01) misplaced = f;
+  }
+  ASSERT_GE(misplaced, 0);
+  frameLandmarks[0].face = misplaced;
+  frameLandmarks[0].bary = Vec3::Constant(1.0 / 3);
+
+  auto meanError = [&](const FrameCorrespondence& c, int patchId)
+  {
+    double sum = 0;
+    int count = 0;
+    for (int v = 0; v < sphere.numVertices(); ++v)
+      if (c.vertices[v].matched() && (patchId < 0 || c.vertices[v].patchId == patchId))
+        sum += (c.vertices[v].position - (rotation * sphere.vertex(v) + move)).norm(), ++count;
+    return count ? sum / count : 0.0;
+  };
+
+  PatchCorrespondenceOptions noVote;
+  noVote.minConsensus = 0;
+  const FrameCorrespondence trusting =
+      TemplatePatches(sphere, templateLandmarks, noVote).correspond(copy.mesh, frameLandmarks);
+  ASSERT_TRUE(trusting.patches[0].kept);
+  EXPECT_EQ(trusting.patches[0].inconsistent, 0) << "the near-isometry test cannot see it";
+  EXPECT_GT(meanError(trusting, templateLandmarks[0].id), 0.2);
+
+  const FrameCorrespondence voted =
+      TemplatePatches(sphere, templateLandmarks).correspond(copy.mesh, frameLandmarks);
+  EXPECT_TRUE(voted.patches[0].outvoted);
+  EXPECT_FALSE(voted.patches[0].kept);
+  EXPECT_LT(voted.patches[0].consensus, 0.7);
+  for (size_t i = 1; i < voted.patches.size(); ++i)
+  {
+    EXPECT_FALSE(voted.patches[i].outvoted) << "landmark " << i;
+    EXPECT_TRUE(voted.patches[i].kept) << "landmark " << i;
+    EXPECT_GE(voted.patches[i].consensus, 0.7) << "landmark " << i;
+  }
+  EXPECT_LT(meanError(voted, -1), 0.01);
+  EXPECT_LT(voted.matchedFraction(), trusting.matchedFraction());
+}
+
 TEST(PatchCorrespondence, BadInputIsAnError)
 {
   const TriangleMesh sphere = icosphere(2, 0.5);

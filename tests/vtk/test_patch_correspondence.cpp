@@ -207,3 +207,38 @@ TEST(PatchCorrespondence, FilterFlagsFramesWithoutLandmarksAndRejectsBadLandmark
     EXPECT_NE(errors.message.find("one block per frame"), std::string::npos) << errors.message;
   }
 }
+
+TEST(PatchCorrespondence, FilterCountsOutvotedSeeds)
+{
+  // Eight landmarks on a sphere; on the frame (the same sphere) the first one sits 30 cm from
+  // where it belongs.
+  const TriangleMesh sphere = icosphere(3, 0.5);
+  std::vector<int> faces;
+  for (int f = 0; f < sphere.numFaces(); f += 160) faces.push_back(f);
+  std::vector<int> moved = faces;
+  const Vec3 right = surfacePosition(sphere, faces[0], Vec3::Constant(1.0 / 3));
+  for (int f = 0; f < sphere.numFaces(); ++f)
+    if (std::abs((surfacePosition(sphere, f, Vec3::Constant(1.0 / 3)) - right).norm() - 0.3) < 0.02)
+      moved[0] = f;
+  ASSERT_NE(moved[0], faces[0]);
+  vtkNew<vtkMultiBlockDataSet> sequence, landmarks;
+  for (unsigned k = 0; k < 2; ++k) sequence->SetBlock(k, toPolyData(sphere));
+  landmarks->SetBlock(0, landmarkData(sphere, faces));
+  landmarks->SetBlock(1, landmarkData(sphere, moved));
+  for (const double minimum : {0.7, 0.0})
+  {
+    vtkNew<ctPatchCorrespondence> filter;
+    filter->SetInputData(0, sequence);
+    filter->SetInputData(1, landmarks);
+    filter->SetTemplateFrame(0);
+    filter->SetMinimumSeedConsensus(minimum);
+    ErrorWatch errors(filter);
+    filter->Update();
+    ASSERT_EQ(errors.message, "");
+    vtkTable* summary = filter->GetSummaryOutput();
+    ASSERT_NE(summary->GetColumnByName("SeedsOutvoted"), nullptr);
+    EXPECT_EQ(summary->GetValueByName(0, "SeedsOutvoted").ToInt(), 0);
+    EXPECT_EQ(summary->GetValueByName(1, "SeedsOutvoted").ToInt(), minimum > 0 ? 1 : 0);
+    EXPECT_EQ(summary->GetValueByName(1, "PatchesKept").ToInt(), minimum > 0 ? 7 : 8);
+  }
+}
