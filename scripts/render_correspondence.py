@@ -3,8 +3,9 @@
 other frames by ctPatchCorrespondence. A frame vertex takes the colour of the template vertex
 mapped nearest to it (within 3 cm); grey means nothing was mapped there.
 
-usage: PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
-           scripts/render_correspondence.py OUT.png SEQUENCE [STRIDE [SHOWN ...]]
+usage: PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 python_wrapping/clothtrack/virtual_display.py \\
+           -- /usr/bin/python3 scripts/render_correspondence.py OUT.png SEQUENCE [STRIDE [SHOWN ...]]
+(virtual_display only without an X display).
 SEQUENCE is anything the sequence reader opens (a folder of frames). Every STRIDE-th frame
 (default 5) is fitted and matched; SHOWN are indices among those frames to draw (default: three
 spread over the sequence). Prints the template frame and each frame's matched fraction.
