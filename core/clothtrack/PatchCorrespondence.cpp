@@ -289,14 +289,24 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
 
 TemplatePatches::~TemplatePatches() = default;
 
+double TemplatePatches::seedFieldReach() const
+{
+  return options_.chartMargin * options_.maxRadius + options_.epsilon;
+}
+
 void TemplatePatches::voteOnSeeds(const TriangleMesh& frame, const ExponentialMapper& mapper,
                                   const std::vector<const OrientedSurfacePoint*>& images,
-                                  std::vector<PatchSummary>& summaries) const
+                                  std::vector<PatchSummary>& summaries,
+                                  std::vector<Eigen::VectorXd>& fields) const
 {
   const int m = static_cast<int>(images.size());
-  // Geodesic distances between the seeds' images on the frame, for the pairs that vote.
+  // Geodesic distances between the seeds' images on the frame, for the pairs that vote. Beyond
+  // the voting reach every pair disagrees, so a field reaching further (for the patch) gives the
+  // same votes.
   const double reach =
-      options_.consensusRadius * (1.0 + options_.consensusRelative) + options_.consensusTolerance;
+      std::max(seedFieldReach(), options_.consensusRadius * (1.0 + options_.consensusRelative) +
+                                     options_.consensusTolerance);
+  fields.assign(m, Eigen::VectorXd());
   Eigen::MatrixXd agree = Eigen::MatrixXd::Zero(m, m); // 1 agree, 0 disagree, -1 no vote
   parallelFor(
       0, m,
@@ -305,8 +315,9 @@ void TemplatePatches::voteOnSeeds(const TriangleMesh& frame, const ExponentialMa
         agree.col(i).setConstant(-1);
         if (!images[i]) return;
         std::vector<int> reached;
-        const Eigen::VectorXd d = mapper.geodesic().distancesFromSeeds(
+        fields[i] = mapper.geodesic().distancesFromSeeds(
             seedsAtSurfacePoint(frame, images[i]->face, images[i]->bary), reach, reached);
+        const Eigen::VectorXd& d = fields[i];
         for (int j = 0; j < m; ++j)
         {
           const double dT = seedDistances_(i, j);
@@ -373,7 +384,8 @@ TemplatePatches::correspond(const TriangleMesh& frame,
         std::abs(patches_[i]->landmark.offset) <= options_.maxSeedOffset)
       images[i] = &*image;
   }
-  if (options_.minConsensus > 0) voteOnSeeds(frame, mapper, images, result.patches);
+  std::vector<Eigen::VectorXd> seedFields(m);
+  if (options_.minConsensus > 0) voteOnSeeds(frame, mapper, images, result.patches, seedFields);
   parallelFor(
       0, static_cast<int>(patches_.size()),
       [&](int i)
@@ -409,11 +421,12 @@ TemplatePatches::correspond(const TriangleMesh& frame,
           }
           consistent[k] = 1;
         }
-        // Geodesic distances on the frame from the seed's image.
+        // Geodesic distances on the frame from the seed's image (the vote's, when it took one).
         std::vector<int> reached;
-        const Eigen::VectorXd fromSeed = mapper.geodesic().distancesFromSeeds(
-            seedsAtSurfacePoint(frame, image->face, image->bary),
-            options_.chartMargin * options_.maxRadius + eps, reached);
+        if (seedFields[i].size() == 0)
+          seedFields[i] = mapper.geodesic().distancesFromSeeds(
+              seedsAtSurfacePoint(frame, image->face, image->bary), seedFieldReach(), reached);
+        const Eigen::VectorXd& fromSeed = seedFields[i];
         for (int k = 0; k < n; ++k)
           if (consistent[k] && !(std::abs(distanceAt(frame, fromSeed, face[k], bary[k]) -
                                           patch.disc.distances[k]) <= eps))

@@ -108,10 +108,15 @@ public:
 
 private:
   struct Patch;
-  /// Marks the seeds outvoted by the geodesic distances between the seeds (minConsensus).
+  /// Marks the seeds outvoted by the geodesic distances between the seeds (minConsensus). The
+  /// distance field from each seed's image, which reaches at least as far as a patch's, goes to
+  /// `fields` for the patch to reuse.
   void voteOnSeeds(const TriangleMesh& frame, const ExponentialMapper& mapper,
                    const std::vector<const OrientedSurfacePoint*>& images,
-                   std::vector<PatchSummary>& summaries) const;
+                   std::vector<PatchSummary>& summaries,
+                   std::vector<Eigen::VectorXd>& fields) const;
+  /// Geodesic reach a patch needs from its seed's image on the frame.
+  double seedFieldReach() const;
   const TriangleMesh& mesh_;
   PatchCorrespondenceOptions options_;
   std::vector<std::unique_ptr<Patch>> patches_;
