@@ -306,7 +306,6 @@ void TemplatePatches::voteOnSeeds(const TriangleMesh& frame, const ExponentialMa
   const double reach =
       std::max(seedFieldReach(), options_.consensusRadius * (1.0 + options_.consensusRelative) +
                                      options_.consensusTolerance);
-  fields.assign(m, Eigen::VectorXd());
   Eigen::MatrixXd agree = Eigen::MatrixXd::Zero(m, m); // 1 agree, 0 disagree, -1 no vote
   parallelFor(
       0, m,

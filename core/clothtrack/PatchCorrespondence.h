@@ -110,7 +110,7 @@ private:
   struct Patch;
   /// Marks the seeds outvoted by the geodesic distances between the seeds (minConsensus). The
   /// distance field from each seed's image, which reaches at least as far as a patch's, goes to
-  /// `fields` for the patch to reuse.
+  /// `fields` (one slot per seed) for the patch to reuse.
   void voteOnSeeds(const TriangleMesh& frame, const ExponentialMapper& mapper,
                    const std::vector<const OrientedSurfacePoint*>& images,
                    std::vector<PatchSummary>& summaries,

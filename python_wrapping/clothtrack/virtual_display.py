@@ -59,11 +59,12 @@ class VirtualDisplay:
         text = b""
         while not text.endswith(b"\n"):
             ready, _, _ = select.select([read_end], [], [], STARTUP_SECONDS)
-            chunk = os.read(read_end, 32) if ready else b""
-            if not chunk:
+            if not ready:
+                raise VirtualDisplayError("Xvfb did not start: no display within %.0f s" % STARTUP_SECONDS)
+            chunk = os.read(read_end, 32)
+            if not chunk:  # the server exited: its last words say why
                 lines = self.log_lines()
-                reason = lines[-1] if lines else ("no display within %.0f s" % STARTUP_SECONDS)
-                raise VirtualDisplayError("Xvfb did not start: " + reason)
+                raise VirtualDisplayError("Xvfb did not start: " + (lines[-1] if lines else "it exited"))
             text += chunk
         return text.decode().strip()
 
