@@ -25,6 +25,8 @@
 // frame is fitted again with the final shape.
 #include "BodyModel.h"
 
+#include <clothtrack/base/Progress.h>
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -100,15 +102,12 @@ struct BodyFitResult
   std::vector<BodyFrameFit> frames;
 };
 
-/// Progress in [0, 1]; return false to cancel (throws Error("cancelled")).
-using BodyFitProgress = std::function<bool(double)>;
-
 /// Fits the model to every frame (frames need not share connectivity; null or empty frames are
 /// flagged Failed). Throws Error when no frame can be fitted at all.
 BodyFitResult fitBodySequence(const BodyModel& model,
                               const std::vector<const TriangleMesh*>& frames,
                               const BodyFitOptions& options = {},
-                              const BodyFitProgress& progress = {});
+                              const StageProgress& progress = {});
 
 /// The body's extremity vertices, in the order head top, left hand, right hand, left toe,
 /// right toe (the geodesically most distant vertex of each end segment in the rest pose).

@@ -1,8 +1,8 @@
 #include "BodyModelBuilder.h"
 
-#include "../Error.h"
-#include "../MeshTopology.h"
-#include "../PointIndex.h"
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/MeshTopology.h>
+#include <clothtrack/mesh/PointIndex.h>
 
 #include <Eigen/Eigenvalues>
 

@@ -1,9 +1,9 @@
 #include "MakeHumanImport.h"
 
-#include "../Error.h"
-#include "../MeshIO.h"
-#include "../MeshTopology.h"
 #include "BodyModelBuilder.h"
+#include <clothtrack/base/Error.h>
+#include <clothtrack/io/MeshIO.h>
+#include <clothtrack/mesh/MeshTopology.h>
 
 #include <nlohmann/json.hpp>
 

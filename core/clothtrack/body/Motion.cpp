@@ -1,6 +1,6 @@
 #include "Motion.h"
 
-#include "../Error.h"
+#include <clothtrack/base/Error.h>
 
 #include <cmath>
 

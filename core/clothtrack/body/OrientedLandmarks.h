@@ -1,8 +1,8 @@
 #pragma once
 // The model's oriented anatomical points on a posed body: position, outward normal, and the
 // tangent direction towards each landmark's direction vertex.
-#include "../LandmarkTransfer.h"
 #include "BodyModel.h"
+#include "LandmarkTransfer.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The body model's skeleton: 22 joints in a fixed order, Y up, the person facing +Z, their left
 // on +X. Each joint's bone runs from the joint to its first child (or to its end point).
-#include "../TriangleMesh.h"
+#include <clothtrack/mesh/TriangleMesh.h>
 
 #include <array>
 #include <string>

@@ -1,6 +1,6 @@
 #include "ClothSimulator.h"
 
-#include "../MeshTopology.h"
+#include <clothtrack/mesh/MeshTopology.h>
 
 #include <algorithm>
 #include <cmath>

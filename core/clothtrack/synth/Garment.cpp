@@ -1,6 +1,6 @@
 #include "Garment.h"
 
-#include "../Error.h"
+#include <clothtrack/base/Error.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Garments for the synthetic captures: open surface meshes made around a body in rest pose,
 // with the skinning weights that carry them along with the body and the rings pinned to it.
-#include "../body/BodyModel.h"
+#include <clothtrack/body/BodyModel.h>
 
 #include <string>
 #include <vector>

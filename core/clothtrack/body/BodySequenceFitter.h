@@ -1,0 +1,389 @@
+#pragma once
+// The body fit's minimisation (Levenberg-Marquardt on poses and shape) over a sequence. Internal to the body fit (BodyFit.cpp).
+#include "BodyFitTerms.h"
+
+#include <clothtrack/base/Error.h>
+
+#include <Eigen/Cholesky>
+
+#include <string>
+
+namespace clothtrack::bodyfit
+{
+class SequenceFitter
+{
+public:
+  SequenceFitter(const BodyModel& model, const BodyFitOptions& options)
+      : options_(options), samples_(model, options.samples),
+        priorWeights_(jointPriorWeights(options))
+  {
+  }
+
+  BodySamples& samples() { return samples_; }
+
+  /// Weight of the one-sided penalty on a knee bending backwards.
+  double limitWeight() const { return 10.0 * options_.hingeStiffness * options_.posePriorWeight; }
+
+  /// Residuals of `pose` (whose sample points and normals are p and normals).
+  Assignments assign(const FrameSurface& frame, const BodyPose& pose, const Points& p,
+                     const Points& normals, const BodyFitStage& stage, double gate) const
+  {
+    Assignments a;
+    const int ns = samples_.numSamples();
+    const double c2 = options_.robustScale * options_.robustScale;
+    std::vector<Vec3> targets(ns), targetNormals(ns);
+    std::vector<char> found(ns);
+    frame.hints.resize(std::max<size_t>(frame.hints.size(), ns), -1);
+    parallelFor(0, ns,
+                [&](int i)
+                {
+                  found[i] = frame.closest(i, p.row(i).transpose(), stage.searchRadius, targets[i],
+                                           targetNormals[i]);
+                });
+    for (int i = 0; i < ns; ++i)
+    {
+      if (!found[i]) continue;
+      const Vec3& target = targets[i];
+      const Vec3& normal = targetNormals[i];
+      const Vec3 diff = p.row(i).transpose() - target;
+      const double d2 = diff.squaredNorm();
+      if (stage.nearestWeight > 0.0 && normals.row(i).dot(normal) > 0.0)
+        a.planes.push_back({i, target, normal, stage.nearestWeight / ns * c2 / (c2 + d2), false});
+      if (stage.insideWeight > 0.0 && normal.dot(diff) > 0.0)
+        a.planes.push_back({i, target, normal, stage.insideWeight / ns, true});
+    }
+    if (stage.landmarkWeight > 0.0 && !frame.extremities.empty())
+    {
+      std::array<int, 5> match;
+      matchExtremities(p, samples_, samples_.extremityRoots(pose), frame.extremities, gate,
+                       options_.handGate, match);
+      for (int label = 0; label < kNumExtremities; ++label)
+        if (match[label] >= 0) ++a.matchedExtremities;
+      for (int label = 0; label < kNumExtremities; ++label)
+      {
+        if (match[label] < 0) continue;
+        const Vec3& target = frame.extremities[match[label]];
+        int nearest = samples_.extremityPoint(label);
+        for (int i : samples_.extremityRegion(label))
+          if ((p.row(i).transpose() - target).squaredNorm() <
+              (p.row(nearest).transpose() - target).squaredNorm())
+            nearest = i;
+        a.points.push_back({nearest, target, stage.landmarkWeight / a.matchedExtremities});
+      }
+    }
+    return a;
+  }
+
+  double regulariser(const Eigen::VectorXd& x, const Eigen::VectorXd* previous) const
+  {
+    double e = 0.0;
+    for (int k = 3; k < NumJoints * 3; ++k) e += priorWeights_[k] * x[k] * x[k];
+    for (int k : kHingeBends) e += limitWeight() * std::pow(std::min(0.0, x[k]), 2);
+    if (previous)
+      for (int k = 0; k < NumJoints * 3; ++k)
+        e += options_.temporalWeight * std::pow(x[k] - (*previous)[k], 2);
+    return e;
+  }
+
+  /// Damped Gauss-Newton on the pose with assignments refreshed every iteration.
+  /// `rigid` moves the body as a whole only (root rotation and translation).
+  double fitPose(const FrameSurface& frame, BodyPose& pose, const BodyPose* previous,
+                 const std::vector<BodyFitStage>& stages, double gate, int* matched = nullptr,
+                 bool rigid = false)
+  {
+    auto active = [rigid](int c) { return !rigid || c < 3 || c >= NumJoints * 3; };
+    Eigen::VectorXd x = toVector(pose);
+    Eigen::VectorXd prev = previous ? toVector(*previous) : Eigen::VectorXd();
+    const Eigen::VectorXd* prevPtr = previous ? &prev : nullptr;
+    double energy = 0.0;
+    double lambda = 1e-3;
+    std::vector<Points> columns(kPoseParameters);
+    for (const BodyFitStage& stage : stages)
+      for (int it = 0; it < stage.iterations; ++it)
+      {
+        Points normals;
+        const Points p = samples_.pose(toPose(x), &normals);
+        const Assignments a = assign(frame, toPose(x), p, normals, stage, gate);
+        if (matched) *matched = a.matchedExtremities;
+        parallelFor(
+            0, kPoseParameters,
+            [&](int c)
+            {
+              if (!active(c))
+              {
+                columns[c] = Points::Zero(p.rows(), 3);
+                return;
+              }
+              Eigen::VectorXd xs = x;
+              xs[c] += kStep;
+              columns[c] = (samples_.pose(toPose(xs)) - p) / kStep;
+            },
+            8);
+        Eigen::MatrixXd h = Eigen::MatrixXd::Zero(kPoseParameters, kPoseParameters);
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(kPoseParameters);
+        a.accumulate(p, columns, h, g);
+        for (int k = 0; k < NumJoints * 3; ++k)
+        {
+          if (k >= 3)
+          {
+            h(k, k) += priorWeights_[k];
+            g[k] += priorWeights_[k] * x[k];
+          }
+          if (std::find(kHingeBends.begin(), kHingeBends.end(), k) != kHingeBends.end() &&
+              x[k] < 0.0)
+          {
+            h(k, k) += limitWeight();
+            g[k] += limitWeight() * x[k];
+          }
+          if (prevPtr)
+          {
+            h(k, k) += options_.temporalWeight;
+            g[k] += options_.temporalWeight * (x[k] - prev[k]);
+          }
+        }
+        for (int k = 0; k < kPoseParameters; ++k)
+          if (!active(k))
+          {
+            h.row(k).setZero();
+            h.col(k).setZero();
+            h(k, k) = 1.0;
+            g[k] = 0.0;
+          }
+        energy = a.energy(p) + regulariser(x, prevPtr);
+        for (int attempt = 0; attempt < 8; ++attempt)
+        {
+          Eigen::MatrixXd damped = h;
+          damped.diagonal().array() += lambda * (h.diagonal().array() + 1e-9);
+          const Eigen::VectorXd step = damped.ldlt().solve(-g);
+          const Eigen::VectorXd candidate = x + step;
+          const double e =
+              a.energy(samples_.pose(toPose(candidate))) + regulariser(candidate, prevPtr);
+          if (std::isfinite(e) && e <= energy)
+          {
+            x = candidate;
+            energy = e;
+            lambda = std::max(1e-6, lambda / 3.0);
+            break;
+          }
+          lambda *= 10.0;
+        }
+      }
+    pose = toPose(x);
+    return energy;
+  }
+
+  /// How well a pose explains a frame, to compare fits from different starts: the mean
+  /// squared distance of the body samples to the frame, each capped at the last stage's search
+  /// radius (a sample with nothing near costs the cap, so a body off the frame cannot look
+  /// good), plus the inside and extremity terms with the last stage's weights.
+  double score(const FrameSurface& frame, const BodyPose& pose) const
+  {
+    Points normals;
+    const Points p = samples_.pose(pose, &normals);
+    BodyFitStage last = options_.stages.back();
+    last.landmarkWeight = std::max(last.landmarkWeight, 0.05);
+    const double cap = last.searchRadius * last.searchRadius;
+    const int ns = samples_.numSamples();
+    std::vector<double> cost(ns, cap);
+    frame.hints.resize(std::max<size_t>(frame.hints.size(), ns), -1);
+    parallelFor(0, ns,
+                [&](int i)
+                {
+                  Vec3 target, normal;
+                  if (!frame.closest(i, p.row(i).transpose(), last.searchRadius, target, normal))
+                    return;
+                  const Vec3 diff = p.row(i).transpose() - target;
+                  const double outside = std::max(0.0, normal.dot(diff));
+                  cost[i] =
+                      std::min(diff.squaredNorm(), cap) + last.insideWeight * outside * outside;
+                });
+    double total = 0.0;
+    for (double c : cost) total += c;
+    last.nearestWeight = last.insideWeight = 0.0; // only the extremity rows below
+    const Assignments extremities = assign(frame, pose, p, normals, last, options_.extremityGate);
+    return total / ns + extremities.energy(p);
+  }
+
+  /// Tries every heading about the up axis, the body centred on the frame and moved rigidly;
+  /// then fits fully from the best heading and from those a quarter, half and three quarters
+  /// of a turn away (front and back are hard to tell apart under wide clothing: the limbs must
+  /// settle before the feet and arms reveal the facing) and keeps the best.
+  BodyFrameFit initialFit(const FrameSurface& frame)
+  {
+    const int headings = std::max(1, options_.headings);
+    const std::vector<BodyFitStage> quick = {{1.0, 0.1, 0.0, 4, 0.4}, {0.3, 1.0, 1.0, 4, 0.15}};
+    std::vector<std::pair<double, BodyPose>> tried;
+    for (int h = 0; h < headings; ++h)
+    {
+      BodyPose pose;
+      pose.rotations.row(Pelvis) =
+          (options_.up.normalized() * (2.0 * M_PI * h / headings)).transpose();
+      const Points p = samples_.pose(pose);
+      const Vec3 centre = p.topRows(samples_.numSamples()).colwise().mean().transpose();
+      pose.translation = frame.centroid - centre;
+      fitPose(frame, pose, nullptr, quick, 2.0 * options_.extremityGate, nullptr, true);
+      tried.push_back({score(frame, pose), pose});
+    }
+    int best = 0;
+    for (int h = 1; h < headings; ++h)
+      if (tried[h].first < tried[best].first) best = h;
+    // The best heading and the ones a quarter, half and three quarters of a turn from it.
+    std::vector<int> candidates;
+    for (int quarter = 0; quarter < 4; ++quarter)
+    {
+      const int h = (best + (quarter * headings + 2) / 4) % headings;
+      if (std::find(candidates.begin(), candidates.end(), h) == candidates.end())
+        candidates.push_back(h);
+    }
+    BodyFrameFit chosen;
+    double chosenScore = std::numeric_limits<double>::infinity();
+    for (int h : candidates)
+    {
+      BodyFrameFit fit;
+      fit.pose = tried[h].second;
+      fit.energy = fitPose(frame, fit.pose, nullptr, options_.stages, options_.extremityGate,
+                           &fit.extremitiesMatched);
+      measure(frame, fit);
+      const double s = score(frame, fit.pose);
+      if (s < chosenScore) chosenScore = s, chosen = fit;
+    }
+    return chosen;
+  }
+
+  /// Statistics of a fitted pose: median distance and fraction of samples inside.
+  void measure(const FrameSurface& frame, BodyFrameFit& fit) const
+  {
+    const Points p = samples_.pose(fit.pose);
+    std::vector<double> distances;
+    int inside = 0;
+    frame.hints.resize(std::max<size_t>(frame.hints.size(), samples_.numSamples()), -1);
+    for (int i = 0; i < samples_.numSamples(); ++i)
+    {
+      Vec3 target, normal;
+      if (!frame.closest(i, p.row(i).transpose(), 10.0, target, normal))
+      {
+        distances.push_back(10.0);
+        continue;
+      }
+      const Vec3 diff = p.row(i).transpose() - target;
+      distances.push_back(diff.norm());
+      inside += normal.dot(diff) <= options_.insideTolerance;
+    }
+    std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+    fit.medianDistance = distances[distances.size() / 2];
+    fit.insideFraction = static_cast<double>(inside) / samples_.numSamples();
+    const bool poor = fit.medianDistance > options_.poorDistance ||
+                      fit.insideFraction < options_.poorInside || !std::isfinite(fit.energy);
+    fit.status = poor ? BodyFitStatus::Poor : BodyFitStatus::Ok;
+    fit.message = poor ? "body far from or outside the frame (median distance " +
+                             std::to_string(fit.medianDistance) + " m, inside " +
+                             std::to_string(fit.insideFraction) + ")"
+                       : std::string();
+  }
+
+  /// One frame: from `init`, full schedule; a poor result is retried from every heading.
+  void fitFrame(const FrameSurface& frame, const BodyPose& init, const BodyPose* previous,
+                const std::vector<BodyFitStage>& stages, BodyFrameFit& fit)
+  {
+    fit.pose = init;
+    fit.energy =
+        fitPose(frame, fit.pose, previous, stages, options_.extremityGate, &fit.extremitiesMatched);
+    measure(frame, fit);
+    if (fit.status == BodyFitStatus::Ok) return;
+    const BodyFrameFit retry = initialFit(frame);
+    // A fresh start must be clearly better and face roughly the same way: a body turned the
+    // other way round can fit a wide garment almost as well, and a person cannot turn round
+    // between two frames.
+    if (retry.status == BodyFitStatus::Ok &&
+        headingChange(retry.pose, init, options_.up) < 0.5 * M_PI &&
+        score(frame, retry.pose) < 0.5 * score(frame, fit.pose))
+    {
+      fit.pose = retry.pose;
+      fit.energy = retry.energy;
+      fit.extremitiesMatched = retry.extremitiesMatched;
+      measure(frame, fit);
+    }
+  }
+
+  /// Gauss-Newton steps on beta with the key frames' poses fixed.
+  void fitShape(const std::vector<const FrameSurface*>& frames, const std::vector<BodyPose>& poses,
+                int iterations)
+  {
+    const int k = std::min(options_.shapeComponents, samples_.numComponents());
+    if (k <= 0 || frames.empty()) return;
+    const BodyFitStage& stage = options_.stages.back();
+    double lambda = 1e-3;
+    for (int it = 0; it < iterations; ++it)
+    {
+      Eigen::MatrixXd h = Eigen::MatrixXd::Zero(k, k);
+      Eigen::VectorXd g = Eigen::VectorXd::Zero(k);
+      std::vector<Assignments> assignments;
+      const double perFrame = 1.0 / frames.size();
+      for (size_t f = 0; f < frames.size(); ++f)
+      {
+        Points normals;
+        const Points p = samples_.pose(poses[f], &normals);
+        Assignments a = assign(*frames[f], poses[f], p, normals, stage, options_.extremityGate);
+        for (auto& r : a.planes) r.weight *= perFrame;
+        for (auto& r : a.points) r.weight *= perFrame;
+        std::vector<Points> columns(k);
+        parallelFor(
+            0, k,
+            [&](int c)
+            { columns[c] = (samples_.poseWithShapeStep(poses[f], c, kStep) - p) / kStep; },
+            4);
+        a.accumulate(p, columns, h, g);
+        assignments.push_back(std::move(a));
+      }
+      const Eigen::VectorXd beta = samples_.beta();
+      auto energyOf = [&](const Eigen::VectorXd& b)
+      {
+        samples_.setShape(b);
+        double e = options_.shapePriorWeight * b.head(k).squaredNorm();
+        for (size_t f = 0; f < frames.size(); ++f)
+          e += assignments[f].energy(samples_.pose(poses[f]));
+        return e;
+      };
+      h.diagonal().array() += options_.shapePriorWeight;
+      g += options_.shapePriorWeight * beta.head(k);
+      const double energy = energyOf(beta);
+      bool accepted = false;
+      for (int attempt = 0; attempt < 8 && !accepted; ++attempt)
+      {
+        Eigen::MatrixXd damped = h;
+        damped.diagonal().array() += lambda * (h.diagonal().array() + 1e-12);
+        Eigen::VectorXd candidate = beta;
+        candidate.head(k) += damped.ldlt().solve(-g);
+        const double e = energyOf(candidate);
+        if (std::isfinite(e) && e <= energy)
+        {
+          accepted = true;
+          lambda = std::max(1e-6, lambda / 3.0);
+        }
+        else
+          lambda *= 10.0;
+      }
+      if (!accepted)
+      {
+        samples_.setShape(beta);
+        break;
+      }
+    }
+  }
+
+private:
+  const BodyFitOptions& options_;
+  BodySamples samples_;
+  Eigen::VectorXd priorWeights_; ///< per rotation parameter
+};
+
+inline std::string frameProblem(const TriangleMesh* frame)
+{
+  if (!frame || frame->numFaces() == 0) return "empty frame";
+  if (!frame->V.allFinite()) return "frame has non-finite coordinates";
+  if (frame->F.minCoeff() < 0 || frame->F.maxCoeff() >= frame->numVertices())
+    return "frame has out-of-range vertex indices";
+  return {};
+}
+
+} // namespace clothtrack::bodyfit

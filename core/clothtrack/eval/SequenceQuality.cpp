@@ -1,0 +1,58 @@
+#include "SequenceQuality.h"
+
+#include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
+#include <clothtrack/mesh/SurfaceLocator.h>
+
+namespace clothtrack
+{
+namespace
+{
+double meanDistance(const Points& points, const SurfaceLocator& locator)
+{
+  double sum = 0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    sum += locator.closestPoint(points.row(i).transpose()).distance;
+  return points.rows() ? sum / points.rows() : 0.0;
+}
+
+double mean(const std::vector<double>& values)
+{
+  double sum = 0;
+  for (double v : values) sum += v / values.size();
+  return sum;
+}
+} // namespace
+
+SequenceQuality sequenceQuality(const std::vector<const Points*>& aligned, const Triangles& templateFaces,
+                                const std::vector<const TriangleMesh*>& frames,
+                                const std::vector<double>& knownSurfaceDistance)
+{
+  const int n = static_cast<int>(aligned.size());
+  if (static_cast<int>(frames.size()) != n)
+    throw Error("Sequence quality: " + std::to_string(n) + " aligned frames for " +
+                std::to_string(frames.size()) + " frames.");
+  SequenceQuality q;
+  q.surfaceDistance.assign(n, 0.0);
+  q.coverageDistance.assign(n, 0.0);
+  parallelFor(
+      0, n,
+      [&](int k)
+      {
+        const bool known =
+            k < static_cast<int>(knownSurfaceDistance.size()) && knownSurfaceDistance[k] >= 0;
+        q.surfaceDistance[k] =
+            known ? knownSurfaceDistance[k] : meanDistance(*aligned[k], SurfaceLocator(*frames[k]));
+        const TriangleMesh alignedMesh{*aligned[k], templateFaces};
+        q.coverageDistance[k] = meanDistance(frames[k]->V, SurfaceLocator(alignedMesh));
+      },
+      1);
+  for (int k = 1; k + 1 < n; ++k)
+    q.jitter.push_back(
+        (*aligned[k + 1] - 2 * *aligned[k] + *aligned[k - 1]).rowwise().norm().mean());
+  q.meanSurfaceDistance = mean(q.surfaceDistance);
+  q.meanCoverageDistance = mean(q.coverageDistance);
+  q.meanJitter = mean(q.jitter);
+  return q;
+}
+} // namespace clothtrack

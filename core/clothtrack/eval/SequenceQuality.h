@@ -1,0 +1,26 @@
+#pragma once
+// How well an aligned sequence follows its frames without a ground truth: the distance from the
+// aligned template to each frame's surface, from each frame to the aligned template (coverage:
+// a frame the template misses shows here, not in the first), and the jitter of the motion.
+#include <clothtrack/mesh/TriangleMesh.h>
+
+#include <vector>
+
+namespace clothtrack
+{
+struct SequenceQuality
+{
+  std::vector<double> surfaceDistance;  ///< per frame: mean, aligned vertices to the frame
+  std::vector<double> coverageDistance; ///< per frame: mean, frame vertices to the aligned mesh
+  /// Per inner frame k (1 .. N-2): mean |x(k+1) - 2 x(k) + x(k-1)| over the template vertices.
+  std::vector<double> jitter;
+  double meanSurfaceDistance = 0, meanCoverageDistance = 0, meanJitter = 0;
+};
+
+/// `*aligned[k]`: the template's vertices (connectivity `templateFaces`) in frame k.
+/// `knownSurfaceDistance[k]`, when not negative, is frame k's surface distance as the fit
+/// already measured it (the list may be empty).
+SequenceQuality sequenceQuality(const std::vector<const Points*>& aligned, const Triangles& templateFaces,
+                                const std::vector<const TriangleMesh*>& frames,
+                                const std::vector<double>& knownSurfaceDistance = {});
+} // namespace clothtrack

@@ -1,0 +1,36 @@
+#pragma once
+// A start for fitting the next frame that already follows the gross motion: the landmarks seen
+// on both frames give, around every point, a rigid motion (least squares, Gaussian weights of the
+// landmarks' distance to the point), which moves the point. Fast turns and swings, which a fit
+// started from the previous frame's shape must otherwise catch up with, are then mostly done.
+#include "SequenceFit.h"
+
+#include <clothtrack/mesh/SurfacePoint.h>
+#include <clothtrack/mesh/TriangleMesh.h>
+
+#include <limits>
+#include <vector>
+
+namespace clothtrack
+{
+/// Positions of the landmarks found on both frames, paired by id: `before` on `a`, `after` on
+/// `b`. Landmarks further than `maxOffset` from the body (on loose cloth) on either frame are
+/// left out.
+void pairLandmarks(const TriangleMesh& a, const std::vector<OrientedSurfacePoint>& onA,
+                   const TriangleMesh& b, const std::vector<OrientedSurfacePoint>& onB,
+                   std::vector<Vec3>& before, std::vector<Vec3>& after,
+                   double maxOffset = std::numeric_limits<double>::infinity());
+
+/// Moves `points` by the locally weighted rigid motion taking `before` to `after` (paired
+/// landmark positions, same order). `radius` (metres) is the Gaussian width of the weights.
+/// Fewer than three pairs: a translation by their mean motion (none without pairs).
+Points predictMotion(const Points& points, const std::vector<Vec3>& before,
+                     const std::vector<Vec3>& after, double radius = 0.3);
+
+/// The start of each frame of a sequence fit: the neighbour's fit moved by the motion of the
+/// landmarks seen on both frames (pairLandmarks, predictMotion over `radius`). `frames` and
+/// `landmarks` (one per frame) must outlive the prediction.
+StartPrediction landmarkStartPrediction(
+    const std::function<const TriangleMesh&(int)>& frames,
+    const std::function<const std::vector<OrientedSurfacePoint>&(int)>& landmarks, double radius);
+} // namespace clothtrack

@@ -1,0 +1,193 @@
+#include "SequenceFit.h"
+
+#include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace clothtrack
+{
+namespace
+{
+/// State shared by the two chains and the thread that reports progress.
+struct Chains
+{
+  Chains(const TriangleMesh& templ, const SequenceFitHooks& h, const TemplateFitOptions& o,
+         std::vector<FrameFit>& f)
+      : templateMesh(templ), hooks(h), options(o), fits(f)
+  {
+  }
+  const TriangleMesh& templateMesh;
+  const SequenceFitHooks& hooks;
+  const TemplateFitOptions& options;
+  std::vector<FrameFit>& fits;
+  std::mutex mutex;
+  std::condition_variable changed;
+  int done = 0;
+  bool stop = false;
+  /// One chain after the other on the calling thread, which then reports progress itself.
+  bool reportInline = false;
+  /// Threads of the whole fit, shared by the chains still running: once one chain ends (the
+  /// template frame is rarely in the middle), the other gets them all.
+  int threads = threadCount();
+  std::atomic<int> runningChains{1};
+  std::exception_ptr failure;
+
+  /// Frame k's inputs, or its earlier result, read under the lock.
+  struct Inputs
+  {
+    TriangleMesh frame;
+    std::optional<VertexTargets> targets;
+    Points start;
+  };
+
+  /// Takes an earlier run's result for frame k; false when there is none.
+  bool resume(int k)
+  {
+    if (!hooks.resumed) return false;
+    std::optional<Points> earlier = hooks.resumed(k);
+    if (!earlier) return false;
+    fits[k].positions = std::move(*earlier);
+    fits[k].resumed = true;
+    return true;
+  }
+
+  void finish(int k, bool fitted)
+  {
+    if (fitted && hooks.fitted) hooks.fitted(k, fits[k]);
+    ++done;
+    changed.notify_all();
+    if (reportInline && hooks.progress && !hooks.progress(static_cast<double>(done) / fits.size()))
+      throw Error("Template fit: cancelled.");
+  }
+
+  /// Fits frames from, from + direction, ... up to `to` (excluded).
+  void run(int from, int to, int direction)
+  {
+    try
+    {
+      const TemplateFitter fitter(templateMesh, options);
+      for (int k = from; k != to; k += direction)
+      {
+        Inputs in;
+        {
+          const std::lock_guard<std::mutex> lock(mutex);
+          if (stop) return;
+          if (resume(k))
+          {
+            finish(k, false);
+            continue;
+          }
+          const int previous = k - direction;
+          in.frame = hooks.frame(k);
+          if (hooks.targets)
+            if (const VertexTargets* t = hooks.targets(k)) in.targets = *t;
+          in.start = hooks.start ? hooks.start(k, previous, fits[previous].positions)
+                                 : fits[previous].positions;
+        }
+        FrameFit fit;
+        try
+        {
+          const ThreadBudget budget(std::max(1, threads / runningChains.load()));
+          fit = fitter.fit(in.start, in.frame, in.targets ? &*in.targets : nullptr);
+        }
+        catch (const Error& e)
+        {
+          throw Error("Frame " + std::to_string(k) + ": " + e.what());
+        }
+        const std::lock_guard<std::mutex> lock(mutex);
+        fits[k] = std::move(fit);
+        finish(k, true);
+      }
+    }
+    catch (...)
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (!failure) failure = std::current_exception();
+      stop = true;
+      changed.notify_all();
+    }
+  }
+
+  /// Reports progress until `running` chains have ended; a cancel stops them.
+  void report(const int& running, int numFrames)
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    int reported = -1;
+    while (running > 0)
+    {
+      if (done != reported && !stop && hooks.progress)
+      {
+        reported = done;
+        if (!hooks.progress(static_cast<double>(reported) / numFrames))
+        {
+          failure = std::make_exception_ptr(Error("Template fit: cancelled."));
+          stop = true;
+        }
+        continue;
+      }
+      changed.wait(lock);
+    }
+  }
+};
+} // namespace
+
+std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int templateFrame,
+                                          int numFrames, const SequenceFitHooks& hooks,
+                                          const TemplateFitOptions& options)
+{
+  if (templateFrame < 0 || templateFrame >= numFrames)
+    throw Error("Template fit: the template frame " + std::to_string(templateFrame) +
+                " is not in the sequence of " + std::to_string(numFrames) + " frames.");
+  if (!hooks.frame) throw Error("Template fit: no frame source.");
+  std::vector<FrameFit> fits(numFrames);
+  Chains chains(templateMesh, hooks, options, fits);
+  {
+    const std::lock_guard<std::mutex> lock(chains.mutex);
+    if (!chains.resume(templateFrame))
+    {
+      FrameFit& own = fits[templateFrame];
+      own.positions = templateMesh.V;
+      own.used.assign(templateMesh.numVertices(), 0);
+      own.surfaceDistance = Eigen::VectorXd::Zero(templateMesh.numVertices());
+      chains.finish(templateFrame, true);
+    }
+    else
+      chains.finish(templateFrame, false);
+  }
+  int running = 2;
+  auto chain = [&](int from, int to, int direction)
+  {
+    chains.run(from, to, direction);
+    --chains.runningChains;
+    const std::lock_guard<std::mutex> lock(chains.mutex);
+    --running;
+    chains.changed.notify_all();
+  };
+  if (threadCount() > 1 && templateFrame > 0 && templateFrame + 1 < numFrames)
+  {
+    chains.runningChains = 2;
+    std::thread backward(chain, templateFrame - 1, -1, -1);
+    std::thread forward(chain, templateFrame + 1, numFrames, +1);
+    chains.report(running, numFrames);
+    backward.join();
+    forward.join();
+  }
+  else
+  {
+    running = 0;
+    chains.reportInline = true;
+    chains.run(templateFrame - 1, -1, -1);
+    chains.run(templateFrame + 1, numFrames, +1);
+  }
+  if (chains.failure) std::rethrow_exception(chains.failure);
+  if (hooks.progress) hooks.progress(1.0);
+  return fits;
+}
+} // namespace clothtrack

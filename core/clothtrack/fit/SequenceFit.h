@@ -1,0 +1,44 @@
+#pragma once
+// Stage 3 over a sequence, in the paper's order (Shehu et al. 2016, section 4.3): the template
+// frame j keeps the template; frames j-1 .. 0 and j+1 .. N-1 are fitted one after the other,
+// each started from its neighbour's fit. The two chains are independent and run side by side
+// when threadCount() > 1, each with its own TemplateFitter (a fitter keeps its factorisations).
+#include "TemplateFit.h"
+
+#include <clothtrack/base/Progress.h>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace clothtrack
+{
+/// Turns the fit of frame `from` into the start of frame k (e.g. landmarkStartPrediction).
+using StartPrediction = std::function<Points(int k, int from, const Points& fitOfFrom)>;
+
+/// What the chains read and where their results go. Every callback is called one at a time
+/// (never by both chains at once), and what it returns is copied at once.
+struct SequenceFitHooks
+{
+  /// Frame k. Required.
+  std::function<const TriangleMesh&(int k)> frame;
+  /// Correspondences of frame k; null (or no function) for none.
+  std::function<const VertexTargets*(int k)> targets;
+  /// The start of frame k; by default the neighbour's fit as it is.
+  StartPrediction start;
+  /// Frame k's positions from an earlier run, which are kept instead of fitting the frame
+  /// (resuming an interrupted run); nullopt to fit it.
+  std::function<std::optional<Points>(int k)> resumed;
+  /// Called with each frame as soon as it is fitted, the template frame included (not for
+  /// resumed frames): writing, evaluation.
+  std::function<void(int k, const FrameFit& fit)> fitted;
+  /// Fraction of the frames done; returning false cancels (Error thrown).
+  StageProgress progress;
+};
+
+/// Fits the template through all `numFrames` frames. Throws Error (naming the frame) when a fit
+/// fails, or when cancelled.
+std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int templateFrame,
+                                          int numFrames, const SequenceFitHooks& hooks,
+                                          const TemplateFitOptions& options = {});
+} // namespace clothtrack

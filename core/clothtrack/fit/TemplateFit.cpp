@@ -1,0 +1,432 @@
+#include "TemplateFit.h"
+
+#include "FitQuadratic.h"
+#include "FitSolvers.h"
+
+#include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
+#include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/mesh/MeshTopology.h>
+#include <clothtrack/mesh/MeshValidation.h>
+#include <clothtrack/mesh/SurfaceLocator.h>
+#include <clothtrack/solver/PreconditionerFactor.h>
+
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace clothtrack
+{
+namespace
+{
+double seconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+} // namespace
+
+int VertexTargets::count() const
+{
+  return static_cast<int>(std::count(matched.begin(), matched.end(), 1));
+}
+
+VertexTargets vertexTargets(const FrameCorrespondence& correspondence)
+{
+  const int n = static_cast<int>(correspondence.vertices.size());
+  VertexTargets t;
+  t.position = Points::Zero(n, 3);
+  t.matched.assign(n, 0);
+  for (int i = 0; i < n; ++i)
+    if (correspondence.vertices[i].matched())
+    {
+      t.matched[i] = 1;
+      t.position.row(i) = correspondence.vertices[i].position.transpose();
+    }
+  return t;
+}
+
+struct TemplateFitter::Impl
+{
+  int n = 0;
+  std::vector<std::array<int, 2>> edges;
+  Adjacency neighbours;   // the template's vertex adjacency (MeshTopology::vertexVertices)
+  int neighbourCount = 0; // sum of |N(i)|
+  std::vector<std::array<int, 3>> faces;
+  // Storage index in pattern.valuePtr() of the lower diagonal block entries (10 per vertex) and of
+  // the four diagonal entries of each edge's off-diagonal block: H's pattern never changes.
+  std::vector<std::array<int, 10>> diagonalSlots;
+  std::vector<std::array<int, 4>> edgeSlots;
+  SparseMatrix pattern;
+  // One numeric factorisation per stage, kept across rounds and frames: the normal equations
+  // change little from one round to the next (a few nearest points) or from one frame to the
+  // next (the template moved a little), so the old factor preconditions conjugate gradients that
+  // reach the new solution in a few steps. A factor is renewed when they need too many.
+  // fit() is therefore not reentrant.
+  mutable std::vector<std::unique_ptr<PreconditionerFactor>> factors;
+  mutable std::vector<unsigned char> stale; // per stage: renew the factor at its next round
+  mutable Unknowns scratch[4];
+
+  FactorBackend backend = FactorBackend::Block;
+
+  Impl(const TriangleMesh& mesh, FactorBackend factorBackend) : backend(factorBackend)
+  {
+    n = mesh.numVertices();
+    const MeshTopology topology = buildTopology(mesh);
+    edges = topology.edges;
+    neighbours = topology.vertexVertices;
+    neighbourCount = static_cast<int>(neighbours.items.size());
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(10 * static_cast<size_t>(n) + 4 * edges.size());
+    for (int i = 0; i < n; ++i)
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c <= r; ++c) entries.emplace_back(4 * i + r, 4 * i + c, 1.0);
+    for (const auto& e : edges)
+      for (int r = 0; r < 4; ++r) entries.emplace_back(4 * e[1] + r, 4 * e[0] + r, 1.0);
+    pattern.resize(4 * n, 4 * n);
+    pattern.setFromTriplets(entries.begin(), entries.end());
+    pattern.makeCompressed();
+    auto slot = [&](int row, int col)
+    { return static_cast<int>(&pattern.coeffRef(row, col) - pattern.valuePtr()); };
+    diagonalSlots.resize(n);
+    for (int i = 0; i < n; ++i)
+    {
+      int k = 0;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c <= r; ++c) diagonalSlots[i][k++] = slot(4 * i + r, 4 * i + c);
+    }
+    edgeSlots.resize(edges.size());
+    for (size_t e = 0; e < edges.size(); ++e)
+      for (int r = 0; r < 4; ++r) edgeSlots[e][r] = slot(4 * edges[e][1] + r, 4 * edges[e][0] + r);
+  }
+
+  /// Solves H X = R to the relative residual `tolerance` with the factor of `stage`; returns the
+  /// conjugate-gradient steps.
+  int solveExact(const Quadratic& q, Unknowns& X, size_t stage, double tolerance,
+                 FrameFit& stats, bool mayRefactor = true) const
+  {
+    constexpr int kMaxSteps = 20; // conjugate-gradient steps before the factor is renewed
+    if (factors.size() <= stage) factors.resize(stage + 1), stale.resize(stage + 1, 0);
+    std::unique_ptr<PreconditionerFactor>& factor = factors[stage];
+    auto refactor = [&]()
+    {
+      const auto start = std::chrono::steady_clock::now();
+      if (!factor) factor = makeFactor(backend, pattern);
+      try
+      {
+        factor->factorise(normalMatrix(q));
+      }
+      catch (const Error&)
+      {
+        factor.reset(); // the next round starts afresh
+        throw Error("Template fit: the normal equations are not positive definite.");
+      }
+      ++stats.factorisations;
+      stats.factorSeconds += seconds(start);
+    };
+    if (!factor || stale[stage]) refactor();
+    stale[stage] = 0;
+    const double target = tolerance * q.R.norm();
+    Unknowns* work[4] = {&scratch[0], &scratch[1], &scratch[2], &scratch[3]};
+    double rr = 0;
+    const auto start = std::chrono::steady_clock::now();
+    const int step = conjugateGradients(q, *factor, target, kMaxSteps, X, work, rr);
+    stats.solveSeconds += seconds(start);
+    if (std::sqrt(rr) > target && mayRefactor)
+    {
+      // Too far from the factored matrix: renew the factor and finish from here.
+      refactor();
+      return step + solveExact(q, X, stage, tolerance, stats, false);
+    }
+    return step;
+  }
+
+  /// H of `q` as a sparse matrix (lower triangle), for factorisation.
+  SparseMatrix normalMatrix(const Quadratic& q) const
+  {
+    SparseMatrix H = pattern;
+    double* values = H.valuePtr();
+    for (size_t e = 0; e < edges.size(); ++e)
+      for (int r = 0; r < 4; ++r) values[edgeSlots[e][r]] = -q.edgeWeight;
+    for (int i = 0; i < n; ++i)
+    {
+      int k = 0;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c <= r; ++c) values[diagonalSlots[i][k++]] = q.diagonal[i](r, c);
+    }
+    return H;
+  }
+
+  /// The quadratic of one round. `b` holds [t_i - centroid; 1]; targets are relative to the
+  /// centroid too; weights already include the 1/count normalisations.
+  Quadratic assemble(const Eigen::Matrix<double, Eigen::Dynamic, 4>& b,
+                     const std::vector<unsigned char>& hasCorrespondence,
+                     const Points& correspondence, double correspondenceWeight,
+                     const std::vector<unsigned char>& hasNearest, const Points& nearest,
+                     double nearestWeight, double smoothnessWeight, double temporalWeight) const
+  {
+    Quadratic q;
+    q.R = Unknowns::Zero(4 * static_cast<Eigen::Index>(n), 3);
+    // Each neighbour pair appears twice in sum_i sum_{j in N(i)}, hence the factor 2.
+    const double edgeWeight = 2.0 * smoothnessWeight;
+    q.edgeWeight = edgeWeight;
+    q.neighbours = &neighbours;
+    q.diagonal.resize(n);
+    std::vector<double> constant(n, 0.0);
+    parallelFor(0, n,
+                [&](int i)
+                {
+                  Eigen::Matrix4d block =
+                      Eigen::Matrix4d::Identity() * (edgeWeight * neighbours.degree(i) + temporalWeight);
+                  Eigen::Matrix<double, 4, 3> rhs = Eigen::Matrix<double, 4, 3>::Zero();
+                  rhs.topRows<3>().setIdentity();
+                  rhs *= temporalWeight;
+                  double c = 3.0 * temporalWeight;
+                  const Eigen::Vector4d bi = b.row(i).transpose();
+                  auto addPoint = [&](double w, const Vec3& target)
+                  {
+                    block += w * bi * bi.transpose();
+                    rhs += w * bi * target.transpose();
+                    c += w * target.squaredNorm();
+                  };
+                  if (correspondenceWeight > 0 && hasCorrespondence[i])
+                    addPoint(correspondenceWeight, correspondence.row(i).transpose());
+                  if (nearestWeight > 0 && hasNearest[i])
+                    addPoint(nearestWeight, nearest.row(i).transpose());
+                  q.R.middleRows<4>(4 * i) = rhs;
+                  q.diagonal[i] = block;
+                  constant[i] = c;
+                });
+    for (double c : constant) q.c += c;
+    return q;
+  }
+};
+
+namespace
+{
+void checkOptions(const TemplateFitOptions& o)
+{
+  if (o.stages.empty()) throw Error("Template fit: no stage given.");
+  for (const auto& s : o.stages)
+  {
+    const double w[] = {s.correspondence, s.smoothness, s.nearest, s.temporal};
+    for (double x : w)
+      if (!(x >= 0) || !std::isfinite(x))
+        throw Error("Template fit: stage weights must be finite and non-negative.");
+    if (!(s.temporal > 0) && !(s.smoothness > 0))
+      throw Error("Template fit: every stage needs a positive smoothness or temporal weight, "
+                  "otherwise vertices without data are undetermined.");
+  }
+  if (o.roundsPerStage < 1) throw Error("Template fit: roundsPerStage must be at least 1.");
+  if (!(o.lengthScale > 0 && std::isfinite(o.lengthScale)))
+    throw Error("Template fit: the length scale must be positive.");
+  if (!(o.solverTolerance > 0 && o.solverTolerance < 1) ||
+      !(o.intermediateTolerance > 0 && o.intermediateTolerance < 1))
+    throw Error("Template fit: the solver tolerances must be in (0, 1).");
+  if (!(o.refactorSteps >= 0) || !std::isfinite(o.refactorSteps))
+    throw Error("Template fit: refactorSteps must be 0 or more.");
+  if (o.nearestEvery < 1) throw Error("Template fit: nearestEvery must be at least 1.");
+  if (!(o.maxNearestDistance > 0)) throw Error("Template fit: maxNearestDistance must be > 0.");
+  if (!(o.nearestReuse >= 0) || !std::isfinite(o.nearestReuse))
+    throw Error("Template fit: nearestReuse must be 0 or more.");
+  if (!(o.correspondenceOutlier >= 0))
+    throw Error("Template fit: correspondenceOutlier must be >= 0.");
+  if (!(o.maxNormalAngle > 0 && o.maxNormalAngle <= 180))
+    throw Error("Template fit: maxNormalAngle must be in (0, 180] degrees.");
+}
+} // namespace
+
+TemplateFitter::TemplateFitter(const TriangleMesh& templateMesh, const TemplateFitOptions& options)
+    : options_(options)
+{
+  checkOptions(options_);
+  validateMesh(templateMesh, "Template");
+  impl_ = std::make_unique<Impl>(templateMesh, options_.factorBackend);
+  impl_->faces.resize(templateMesh.numFaces());
+  for (int f = 0; f < templateMesh.numFaces(); ++f)
+    impl_->faces[f] = {templateMesh.F(f, 0), templateMesh.F(f, 1), templateMesh.F(f, 2)};
+}
+
+TemplateFitter::~TemplateFitter() = default;
+
+FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
+                             const VertexTargets* targets) const
+{
+  const auto clock = std::chrono::steady_clock::now();
+  const Impl& m = *impl_;
+  const int n = m.n;
+  if (start.rows() != n)
+    throw Error("Template fit: the start positions have " + std::to_string(start.rows()) +
+                " vertices, the template " + std::to_string(n) + ".");
+  if (!start.allFinite()) throw Error("Template fit: the start positions are not finite.");
+  validateMesh(frame, "Frame");
+  if (targets && (targets->position.rows() != n || static_cast<int>(targets->matched.size()) != n))
+    throw Error("Template fit: the correspondences do not have one entry per template vertex.");
+
+  const Vec3 centroid = start.colwise().mean().transpose();
+  // Lengths in the energy are in units of 1 / lengthScale metres (see the option).
+  const double scale = options_.lengthScale;
+  Eigen::Matrix<double, Eigen::Dynamic, 4> b(n, 4);
+  b.leftCols<3>() = (start.rowwise() - centroid.transpose()) * scale;
+  b.col(3).setOnes();
+
+  FrameFit result;
+  result.used.assign(n, 0);
+  Points correspondence = Points::Zero(n, 3);
+  if (targets && options_.useCorrespondence)
+    for (int i = 0; i < n; ++i)
+      if (targets->matched[i] && targets->position.row(i).allFinite())
+      {
+        result.used[i] = 1;
+        correspondence.row(i) = (targets->position.row(i) - centroid.transpose()) * scale;
+      }
+  const int correspondenceCount =
+      static_cast<int>(std::count(result.used.begin(), result.used.end(), 1));
+
+  const SurfaceLocator locator(frame);
+  const Points frameNormals = faceNormals(frame);
+  const double minCosine = std::cos(options_.maxNormalAngle * M_PI / 180.0);
+  std::vector<int> hint(n, -1);
+  // Where each vertex was when its closest point was last searched for (nearestReuse).
+  constexpr double kFar = std::numeric_limits<double>::infinity();
+  Points searchedAt = Points::Constant(n, 3, kFar);
+  std::vector<unsigned char> hasNearest(n, 0);
+  Points nearest = Points::Zero(n, 3);
+  TriangleMesh deformed;
+  deformed.F.resize(static_cast<Eigen::Index>(m.faces.size()), 3);
+  for (size_t f = 0; f < m.faces.size(); ++f)
+    deformed.F.row(f) << m.faces[f][0], m.faces[f][1], m.faces[f][2];
+
+  Unknowns X = identityMaps(n);
+  auto positions = [&](const Unknowns& maps)
+  {
+    Points p(n, 3);
+    for (int i = 0; i < n; ++i)
+      p.row(i) = b.row(i) * maps.middleRows<4>(4 * static_cast<Eigen::Index>(i));
+    return p;
+  };
+  const double reuse2 = options_.nearestReuse * options_.nearestReuse;
+  std::atomic<int> searches{0};
+  auto findNearest = [&](const Points& p)
+  {
+    deformed.V = p;
+    const Points normals = areaWeightedVertexNormals(deformed);
+    parallelFor(0, n,
+                [&](int i)
+                {
+                  const Vec3 query = p.row(i).transpose() / scale + centroid;
+                  SurfacePoint s;
+                  if (hint[i] >= 0 &&
+                      (query - searchedAt.row(i).transpose()).squaredNorm() < reuse2)
+                  {
+                    // Moved by d < nearestReuse since the search: that triangle is at most the
+                    // old distance + d away, no point of the frame is nearer than the old - d.
+                    const int f = hint[i];
+                    s.position = closestPointOnTriangle(query, frame.vertex(frame.F(f, 0)),
+                                                        frame.vertex(frame.F(f, 1)),
+                                                        frame.vertex(frame.F(f, 2)), s.bary);
+                    s.distance = (s.position - query).norm();
+                    if (s.distance <= options_.maxNearestDistance) s.face = f;
+                  }
+                  if (!s.valid())
+                  {
+                    s = locator.closestPoint(query, options_.maxNearestDistance, hint[i]);
+                    searches.fetch_add(1, std::memory_order_relaxed);
+                    // A failed search leaves the hint as it was: nothing to reuse.
+                    if (s.valid())
+                      searchedAt.row(i) = query.transpose();
+                    else
+                      searchedAt.row(i).setConstant(kFar);
+                  }
+                  hasNearest[i] = 0;
+                  if (!s.valid()) return;
+                  hint[i] = s.face;
+                  if (normals.row(i).dot(frameNormals.row(s.face)) <= minCosine) return;
+                  hasNearest[i] = 1;
+                  nearest.row(i) = (s.position - centroid).transpose() * scale;
+                });
+    return static_cast<int>(std::count(hasNearest.begin(), hasNearest.end(), 1));
+  };
+
+  // Correspondences in use: all of them, less the outliers of the fit so far (when asked).
+  std::vector<unsigned char> active = result.used;
+  int activeCount = correspondenceCount;
+  bool firstRound = true;
+  for (size_t stageIndex = 0; stageIndex < options_.stages.size(); ++stageIndex)
+  {
+    const FitStage& stage = options_.stages[stageIndex];
+    const bool usesNearest = options_.useNearest && stage.nearest > 0;
+    const double ws = m.neighbourCount > 0 ? stage.smoothness / m.neighbourCount : 0.0;
+    const double wt = stage.temporal / n;
+    const int rounds = usesNearest ? options_.roundsPerStage : 1;
+    const int stepsBefore = result.iterations, roundsBefore = result.rounds;
+    for (int round = 0; round < rounds; ++round)
+    {
+      Points before = positions(X);
+      if (options_.correspondenceOutlier > 0 && !firstRound && stage.correspondence > 0)
+      {
+        activeCount = 0;
+        for (int i = 0; i < n; ++i)
+        {
+          active[i] = result.used[i] && (before.row(i) - correspondence.row(i)).norm() <=
+                                            options_.correspondenceOutlier * scale;
+          activeCount += active[i];
+        }
+      }
+      firstRound = false;
+      const double wc = activeCount > 0 ? stage.correspondence / activeCount : 0.0;
+      double wd = 0.0;
+      if (usesNearest)
+      {
+        result.nearestValid = findNearest(before);
+        wd = result.nearestValid > 0 ? stage.nearest / result.nearestValid : 0.0;
+      }
+      const Quadratic q =
+          m.assemble(b, active, correspondence, wc, hasNearest, nearest, wd, ws, wt);
+      if (options_.solver == FitSolver::Exact)
+        result.iterations += m.solveExact(q, X, stageIndex,
+                                          round + 1 == rounds ? options_.solverTolerance
+                                                              : options_.intermediateTolerance,
+                                          result);
+      else
+        result.iterations += minimiseLBFGS(q, X, options_.nearestEvery);
+      ++result.rounds;
+      const double moved = (positions(X) - before).rowwise().norm().maxCoeff() / scale;
+      const bool converged = options_.solver == FitSolver::Exact && moved < options_.convergence;
+      if (converged || round + 1 == rounds) result.energy = q.energy(X);
+      if (converged) break;
+    }
+    if (options_.solver == FitSolver::Exact && options_.refactorSteps > 0 &&
+        result.iterations - stepsBefore > options_.refactorSteps * (result.rounds - roundsBefore))
+      m.stale[stageIndex] = 1;
+  }
+  result.used = active;
+  result.nearestSearches = searches;
+  result.positions = (positions(X) / scale).rowwise() + centroid.transpose();
+  if (!result.positions.allFinite()) throw Error("Template fit: the solve diverged.");
+  result.surfaceDistance.resize(n);
+  parallelFor(0, n,
+              [&](int i)
+              {
+                result.surfaceDistance[i] =
+                    locator
+                        .closestPoint(result.positions.row(i).transpose(),
+                                      std::numeric_limits<double>::infinity(), hint[i])
+                        .distance;
+              });
+  result.seconds = seconds(clock);
+  return result;
+}
+
+} // namespace clothtrack

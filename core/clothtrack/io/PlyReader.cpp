@@ -1,0 +1,260 @@
+// Strict Stanford PLY reader: every size is checked against the file so that a truncated or
+// corrupt file is an error, not a crash.
+#include "MeshIO.h"
+#include <clothtrack/base/Error.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace clothtrack
+{
+namespace
+{
+enum class Format
+{
+  Ascii,
+  BinaryLittle,
+  BinaryBig
+};
+
+struct Property
+{
+  std::string name;
+  std::string type;      // value type (list item type for lists)
+  std::string countType; // non-empty for a list
+};
+
+struct Element
+{
+  std::string name;
+  long count = 0;
+  std::vector<Property> properties;
+};
+
+int typeSize(const std::string& t)
+{
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+  if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32")
+    return 4;
+  if (t == "double" || t == "float64") return 8;
+  return 0;
+}
+
+class Cursor
+{
+public:
+  Cursor(const std::string& path, const std::string& data, size_t pos, Format format)
+      : path_(path), data_(data), pos_(pos), format_(format)
+  {
+  }
+
+  double read(const std::string& type)
+  {
+    if (format_ == Format::Ascii) return readAscii();
+    const int size = typeSize(type);
+    if (pos_ + size > data_.size())
+      throw Error(path_ + ": truncated file (binary data ends early)");
+    unsigned char bytes[8];
+    std::memcpy(bytes, data_.data() + pos_, size);
+    pos_ += size;
+    const bool little = format_ == Format::BinaryLittle;
+    const uint16_t one = 1;
+    const bool hostLittle = *reinterpret_cast<const unsigned char*>(&one) == 1;
+    if (little != hostLittle)
+      for (int i = 0; i < size / 2; ++i) std::swap(bytes[i], bytes[size - 1 - i]);
+    if (type == "char" || type == "int8") return static_cast<int8_t>(bytes[0]);
+    if (type == "uchar" || type == "uint8") return bytes[0];
+    if (type == "short" || type == "int16") return as<int16_t>(bytes);
+    if (type == "ushort" || type == "uint16") return as<uint16_t>(bytes);
+    if (type == "int" || type == "int32") return as<int32_t>(bytes);
+    if (type == "uint" || type == "uint32") return as<uint32_t>(bytes);
+    if (type == "float" || type == "float32") return as<float>(bytes);
+    return as<double>(bytes);
+  }
+
+private:
+  template <class T> static double as(const unsigned char* bytes)
+  {
+    T value;
+    std::memcpy(&value, bytes, sizeof(T));
+    return static_cast<double>(value);
+  }
+
+  double readAscii()
+  {
+    while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
+    if (pos_ >= data_.size()) throw Error(path_ + ": truncated file (ASCII data ends early)");
+    const char* start = data_.c_str() + pos_;
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(start, &end);
+    if (end == start) throw Error(path_ + ": malformed number near byte " + std::to_string(pos_));
+    pos_ += end - start;
+    return value;
+  }
+
+  const std::string& path_;
+  const std::string& data_;
+  size_t pos_;
+  Format format_;
+};
+} // namespace
+
+TriangleMesh readPLY(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string data = buffer.str();
+  if (data.empty()) throw Error(path + ": empty file");
+  if (data.compare(0, 3, "ply") != 0)
+    throw Error(path + ": not a PLY file (does not start with 'ply')");
+  const size_t headerEnd = data.find("end_header");
+  if (headerEnd == std::string::npos) throw Error(path + ": truncated PLY header (no end_header)");
+  size_t bodyStart = data.find('\n', headerEnd);
+  if (bodyStart == std::string::npos)
+    throw Error(path + ": truncated file (nothing after end_header)");
+  ++bodyStart;
+
+  Format format = Format::Ascii;
+  bool haveFormat = false;
+  std::vector<Element> elements;
+  std::istringstream header(data.substr(0, headerEnd));
+  std::string line;
+  int lineNo = 0;
+  while (std::getline(header, line))
+  {
+    ++lineNo;
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    const std::string where = path + ":" + std::to_string(lineNo) + ": ";
+    if (keyword == "format")
+    {
+      std::string name;
+      words >> name;
+      if (name == "ascii")
+        format = Format::Ascii;
+      else if (name == "binary_little_endian")
+        format = Format::BinaryLittle;
+      else if (name == "binary_big_endian")
+        format = Format::BinaryBig;
+      else
+        throw Error(where + "unknown PLY format '" + name + "'");
+      haveFormat = true;
+    }
+    else if (keyword == "element")
+    {
+      Element e;
+      if (!(words >> e.name >> e.count) || e.count < 0)
+        throw Error(where + "malformed element line");
+      elements.push_back(e);
+    }
+    else if (keyword == "property")
+    {
+      if (elements.empty()) throw Error(where + "property before any element");
+      Property p;
+      std::string type;
+      words >> type;
+      if (type == "list")
+        words >> p.countType >> p.type >> p.name;
+      else
+      {
+        p.type = type;
+        words >> p.name;
+      }
+      if (!typeSize(p.type) || (!p.countType.empty() && !typeSize(p.countType)) || p.name.empty())
+        throw Error(where + "malformed property line");
+      elements.back().properties.push_back(p);
+    }
+  }
+  if (!haveFormat) throw Error(path + ": PLY header has no format line");
+
+  std::vector<double> coords;
+  std::vector<int> faces;
+  long numVertices = 0;
+  bool haveVertices = false;
+  Cursor cursor(path, data, bodyStart, format);
+  for (const Element& e : elements)
+  {
+    const bool isVertex = e.name == "vertex", isFace = e.name == "face";
+    int xyz[3] = {-1, -1, -1};
+    int indexProperty = -1;
+    for (size_t p = 0; p < e.properties.size(); ++p)
+    {
+      const auto& name = e.properties[p].name;
+      if (isVertex && name.size() == 1 && name[0] >= 'x' && name[0] <= 'z')
+        xyz[name[0] - 'x'] = static_cast<int>(p);
+      if (isFace && (name == "vertex_indices" || name == "vertex_index") &&
+          !e.properties[p].countType.empty())
+        indexProperty = static_cast<int>(p);
+    }
+    if (isVertex)
+    {
+      if (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0)
+        throw Error(path + ": PLY vertex element lacks x, y or z");
+      haveVertices = true;
+      numVertices = e.count;
+      if (static_cast<size_t>(e.count) > data.size()) // each vertex needs at least one byte
+        throw Error(path + ": truncated file (declares " + std::to_string(e.count) + " vertices)");
+      coords.reserve(3 * e.count);
+    }
+    if (isFace && indexProperty < 0)
+      throw Error(path + ": PLY face element lacks a vertex_indices list");
+    std::vector<int> polygon;
+    for (long i = 0; i < e.count; ++i)
+    {
+      double point[3] = {0, 0, 0};
+      for (size_t p = 0; p < e.properties.size(); ++p)
+      {
+        const Property& prop = e.properties[p];
+        if (prop.countType.empty())
+        {
+          const double value = cursor.read(prop.type);
+          for (int k = 0; k < 3; ++k)
+            if (isVertex && xyz[k] == static_cast<int>(p)) point[k] = value;
+          continue;
+        }
+        const double n = cursor.read(prop.countType);
+        if (n < 0 || n > 1e6)
+          throw Error(path + ": corrupt list length " + std::to_string(n) + " in element '" +
+                      e.name + "'");
+        polygon.clear();
+        for (long k = 0; k < static_cast<long>(n); ++k)
+        {
+          const double index = cursor.read(prop.type);
+          if (isFace && static_cast<int>(p) == indexProperty)
+          {
+            if (!haveVertices || index < 0 || index >= numVertices)
+              throw Error(path + ": face " + std::to_string(i) + " uses vertex index " +
+                          std::to_string(static_cast<long>(index)) + ", out of range (file has " +
+                          std::to_string(numVertices) + " vertices)");
+            polygon.push_back(static_cast<int>(index));
+          }
+        }
+        if (isFace && static_cast<int>(p) == indexProperty)
+        {
+          if (polygon.size() < 3)
+            throw Error(path + ": face " + std::to_string(i) + " has fewer than 3 vertices");
+          for (size_t k = 1; k + 1 < polygon.size(); ++k)
+            faces.insert(faces.end(), {polygon[0], polygon[k], polygon[k + 1]});
+        }
+      }
+      if (isVertex) coords.insert(coords.end(), point, point + 3);
+    }
+  }
+  TriangleMesh mesh;
+  mesh.V = Eigen::Map<const Points>(coords.data(), static_cast<Eigen::Index>(coords.size() / 3), 3);
+  mesh.F =
+      Eigen::Map<const Triangles>(faces.data(), static_cast<Eigen::Index>(faces.size() / 3), 3);
+  return mesh;
+}
+} // namespace clothtrack

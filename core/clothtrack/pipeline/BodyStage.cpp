@@ -1,0 +1,46 @@
+#include "BodyStage.h"
+
+#include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
+#include <clothtrack/body/OrientedLandmarks.h>
+#include <clothtrack/mesh/SurfaceLocator.h>
+
+namespace clothtrack
+{
+BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
+                                    const std::vector<const TriangleMesh*>& frames,
+                                    const BodyStageOptions& options, const StageProgress& progress)
+{
+  constexpr double fitShare = 0.95;
+  BodyStageResult out;
+  out.body = fitBodySequence(model, frames, options.fit,
+                             [&](double done) { return !progress || progress(fitShare * done); });
+  const int n = static_cast<int>(frames.size());
+  out.bodyLandmarks.resize(n);
+  out.transferred.resize(n);
+  out.landmarks.resize(n);
+  parallelFor(
+      0, n,
+      [&](int k)
+      {
+        const BodyFrameFit& fit = out.body.frames[k];
+        out.bodyLandmarks[k] = orientedLandmarks(model, model.posed(out.body.beta, fit.pose));
+        out.transferred[k].resize(out.bodyLandmarks[k].size());
+        if (!frames[k] || fit.status == BodyFitStatus::Failed) return;
+        const SurfaceLocator locator(*frames[k]);
+        out.transferred[k] =
+            transferLandmarks(out.bodyLandmarks[k], *frames[k], locator, options.transfer);
+        out.landmarks[k] = landmarkSeeds(out.transferred[k]);
+      },
+      1);
+  if (progress && !progress(1.0)) throw Error("Body fit: cancelled.");
+  return out;
+}
+
+std::vector<double> restPoseDistances(const BodyFitResult& body)
+{
+  std::vector<double> out;
+  for (const BodyFrameFit& f : body.frames) out.push_back(fittedRestPoseDistance(f.status, f.pose));
+  return out;
+}
+} // namespace clothtrack
