@@ -4,11 +4,12 @@
 #include "ctMeshConversion.h"
 #include "ctSyntheticSequence.h"
 
-#include <clothtrack/FrameList.h>
-#include <clothtrack/LandmarkTransfer.h>
-#include <clothtrack/TemplateSelection.h>
 #include <clothtrack/body/BodyFit.h>
+#include <clothtrack/body/LandmarkTransfer.h>
 #include <clothtrack/body/OrientedLandmarks.h>
+#include <clothtrack/io/FrameList.h>
+#include <clothtrack/pipeline/BodyStage.h>
+#include <clothtrack/pipeline/TemplateStage.h>
 
 #include <cstdio>
 
@@ -34,20 +35,11 @@ bool Sequence::truthOf(int j, int v, int k, Vec3& position) const
 
 void fitLandmarks(Sequence& s)
 {
-  const BodyModel& model = builtinBodyModel();
   std::vector<const TriangleMesh*> frames;
   for (const auto& c : s.captures) frames.push_back(&c);
   const auto start = std::chrono::steady_clock::now();
-  const BodyFitResult fit = fitBodySequence(model, frames);
+  s.landmarks = fitBodyAndLandmarks(builtinBodyModel(), frames).landmarks;
   std::printf("body fit: %.1f s\n", seconds(start));
-  s.landmarks.clear();
-  for (size_t k = 0; k < s.captures.size(); ++k)
-  {
-    const TriangleMesh body = model.posed(fit.beta, fit.frames[k].pose);
-    const SurfaceLocator locator(s.captures[k]);
-    s.landmarks.push_back(
-        landmarkSeeds(transferLandmarks(orientedLandmarks(model, body), s.captures[k], locator)));
-  }
 }
 
 Sequence syntheticSequence(const std::string& preset, int numFrames, bool trueLandmarks)
@@ -110,8 +102,8 @@ Sequence directorySequence(const std::string& path, int stride, int maxFrames, b
 
 int chooseTemplate(const Sequence& s)
 {
-  std::vector<FrameTopology> topology;
-  for (const auto& c : s.captures) topology.push_back(frameTopology(c, 0.1));
-  return selectTemplate(topology, {}).chosen;
+  std::vector<const TriangleMesh*> frames;
+  for (const auto& c : s.captures) frames.push_back(&c);
+  return chooseTemplateFrame(frames).chosen;
 }
 } // namespace clothtrack::bench

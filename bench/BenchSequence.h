@@ -4,7 +4,7 @@
 // simulator; stage 1 landmarks from the fitted (or true) body.
 #include "ctCaptureSimulation.h"
 
-#include <clothtrack/PatchCorrespondence.h>
+#include <clothtrack/correspondence/PatchCorrespondence.h>
 
 #include <chrono>
 #include <string>

@@ -7,12 +7,12 @@
 #include "ctMeshConversion.h"
 #include "ctSyntheticSequence.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/FrameList.h>
-#include <clothtrack/InsideTest.h>
-#include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/base/Error.h>
 #include <clothtrack/body/BodyFit.h>
+#include <clothtrack/body/LandmarkTransfer.h>
 #include <clothtrack/body/OrientedLandmarks.h>
+#include <clothtrack/io/FrameList.h>
+#include <clothtrack/mesh/InsideTest.h>
 
 #include <chrono>
 #include <cstdio>

@@ -15,9 +15,9 @@
 // (surfaces the capture invented to close hidden regions) have no truth and are not counted.
 #include "BenchSequence.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/Parallel.h>
-#include <clothtrack/PatchCorrespondence.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
+#include <clothtrack/correspondence/PatchCorrespondence.h>
 
 #include <algorithm>
 #include <chrono>

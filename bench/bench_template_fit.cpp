@@ -21,11 +21,12 @@
 // intermediate, refactor).
 #include "BenchSequence.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/MotionPrediction.h>
-#include <clothtrack/Parallel.h>
-#include <clothtrack/PatchCorrespondence.h>
-#include <clothtrack/TemplateFit.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
+#include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/fit/MotionPrediction.h>
+#include <clothtrack/fit/SequenceFit.h>
+#include <clothtrack/fit/TemplateFit.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -68,6 +69,7 @@ Variant variant(const std::string& fullName)
 {
   // NAME/key=value/...: a variant with some options of its own (timing comparisons in one run).
   const std::vector<std::string> parts = split(fullName, '/');
+  // (exact/cholmod=1: the same with CHOLMOD's factorisation.)
   const std::string name = parts.empty() ? "" : parts[0];
   Variant v{fullName, {}};
   if (roundsPerStage > 0) v.options.roundsPerStage = roundsPerStage;
@@ -102,6 +104,8 @@ Variant variant(const std::string& fullName)
       v.options.intermediateTolerance = value;
     else if (key == "refactor")
       v.options.refactorSteps = value;
+    else if (key == "cholmod")
+      v.options.factorBackend = value != 0 ? FactorBackend::Cholmod : FactorBackend::Block;
     else
       throw Error("unknown variant option '" + key + "'");
   }
@@ -112,6 +116,7 @@ struct Summary
 {
   double mean = 0, p90 = 0, within10 = 0, worstFrame = 0, secondsPerFrame = 0;
   double roundsPerFrame = 0, stepsPerFrame = 0, factorisationsPerFrame = 0, searchesPerFrame = 0;
+  double factorSeconds = 0, solveSeconds = 0; ///< per factorisation, per conjugate-gradient step
   std::vector<double> perFrame;
 };
 
@@ -128,6 +133,8 @@ Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
     out.roundsPerFrame += fits[k].rounds;
     out.stepsPerFrame += fits[k].iterations;
     out.factorisationsPerFrame += fits[k].factorisations;
+    out.factorSeconds += fits[k].factorSeconds;
+    out.solveSeconds += fits[k].solveSeconds;
     out.searchesPerFrame += fits[k].nearestSearches;
     double sum = 0;
     int count = 0;
@@ -151,6 +158,8 @@ Summary evaluate(const Sequence& s, int j, const std::vector<FrameFit>& fits)
     std::nth_element(errors.begin(), errors.begin() + errors.size() * 9 / 10, errors.end());
     out.p90 = errors[errors.size() * 9 / 10];
   }
+  out.factorSeconds /= std::max(1.0, out.factorisationsPerFrame); // totals so far
+  out.solveSeconds /= std::max(1.0, out.stepsPerFrame);
   out.secondsPerFrame = time / std::max<size_t>(1, fits.size() - 1);
   out.roundsPerFrame /= std::max<size_t>(1, fits.size() - 1);
   out.stepsPerFrame /= std::max<size_t>(1, fits.size() - 1);
@@ -204,8 +213,9 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
   // chains (before and after the template frame) side by side.
   std::printf(
       "| variant | mean error | p90 | within 10 cm | worst frame mean | fit time/frame | "
-      "wall/frame | rounds/frame | solver steps/frame | factorisations/frame | searches/frame |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "wall/frame | rounds/frame | solver steps/frame | factorisations/frame | searches/frame | "
+      "s/factorisation | s/solver step |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::map<std::string, Summary> results;
   std::map<std::string, std::vector<double>> walls;
   // With --repeat the variants take turns, so that a slower spell of the machine falls on all.
@@ -239,17 +249,18 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
           return predictMotion(fit, before, after, predictRadius);
         };
       const auto fitStart = std::chrono::steady_clock::now();
-      const auto fits = fitTemplateSequence(
-          templ, j, frames, [&](int k) -> const TriangleMesh& { return s.captures[k]; },
-          [&](int k) { return truthTargets.empty() ? &targets[k] : &truthTargets[k]; }, v.options,
-          {}, predict);
+      SequenceFitHooks hooks;
+      hooks.frame = [&](int k) -> const TriangleMesh& { return s.captures[k]; };
+      hooks.targets = [&](int k) { return truthTargets.empty() ? &targets[k] : &truthTargets[k]; };
+      hooks.start = predict;
+      const auto fits = fitTemplateSequence(templ, j, frames, hooks, v.options);
       const double wall = seconds(fitStart) / std::max(1, frames - 1);
       const Summary r = evaluate(s, j, fits);
       std::printf("| %s | %.2f cm | %.2f cm | %.2f %% | %.2f cm | %.3f s | %.3f s | %.1f | %.1f | "
-                  "%.2f | %.0f |\n",
+                  "%.2f | %.0f | %.4f s | %.4f s |\n",
                   name.c_str(), 100 * r.mean, 100 * r.p90, r.within10, 100 * r.worstFrame,
                   r.secondsPerFrame, wall, r.roundsPerFrame, r.stepsPerFrame,
-                  r.factorisationsPerFrame, r.searchesPerFrame);
+                  r.factorisationsPerFrame, r.searchesPerFrame, r.factorSeconds, r.solveSeconds);
       std::fflush(stdout);
       results[name] = r;
       walls[name].push_back(wall);

@@ -1,10 +1,11 @@
 #include "ctAlignmentError.h"
 
+#include "ctArrayNames.h"
 #include "ctFrameName.h"
 #include "ctNamedArrays.h"
 
-#include <clothtrack/AlignmentError.h>
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/eval/AlignmentError.h>
 
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -68,7 +69,7 @@ int ctAlignmentError::RequestData(vtkInformation*, vtkInformationVector** inputV
     const int n = static_cast<int>(aligned->GetNumberOfBlocks());
     auto* first = vtkPolyData::SafeDownCast(aligned->GetBlock(0));
     vtkDataArray* templateField =
-        first ? first->GetFieldData()->GetArray("TemplateFrame") : nullptr;
+        first ? first->GetFieldData()->GetArray(clothtrack::arrays::TemplateFrame) : nullptr;
     if (!templateField)
       throw Error("alignment error: the aligned blocks carry no TemplateFrame (use ctTemplateFit)");
     const int j = static_cast<int>(templateField->GetComponent(0, 0));

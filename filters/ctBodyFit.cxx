@@ -1,5 +1,6 @@
 #include "ctBodyFit.h"
 
+#include "ctArrayNames.h"
 #include "ctBodyModelIO.h"
 #include "ctBuiltinBodyModel.h"
 #include "ctFrameName.h"
@@ -7,11 +8,12 @@
 #include "ctMeshConversion.h"
 #include "ctNamedArrays.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/LandmarkTransfer.h>
-#include <clothtrack/MeshValidation.h>
+#include <clothtrack/base/Error.h>
 #include <clothtrack/body/BodyFit.h>
+#include <clothtrack/body/LandmarkTransfer.h>
 #include <clothtrack/body/OrientedLandmarks.h>
+#include <clothtrack/mesh/MeshValidation.h>
+#include <clothtrack/pipeline/BodyStage.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -111,12 +113,16 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
     options.temporalWeight = this->TemporalWeight;
     options.shapeFrames = this->ShapeFrames;
     options.samples = this->Samples;
-    const BodyFitResult fit = fitBodySequence(model, frames, options,
-                                              [this](double progress)
-                                              {
-                                                this->UpdateProgress(0.95 * progress);
-                                                return !this->GetAbortExecute();
-                                              });
+    BodyStageOptions stageOptions{options, {}};
+    stageOptions.transfer.outsideTolerance = this->OutsideTolerance;
+    stageOptions.transfer.insideTolerance = this->InsideTolerance;
+    const BodyStageResult stage = fitBodyAndLandmarks(model, frames, stageOptions,
+                                                      [this](double progress)
+                                                      {
+                                                        this->UpdateProgress(0.95 * progress);
+                                                        return !this->GetAbortExecute();
+                                                      });
+    const BodyFitResult& fit = stage.body;
 
     auto* bodies = vtkMultiBlockDataSet::GetData(outputVector, 0);
     auto* landmarks = vtkMultiBlockDataSet::GetData(outputVector, 1);
@@ -134,7 +140,7 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
     detected->SetName("ExtremitiesDetected");
     matched->SetName("ExtremitiesMatched");
     vtkNew<vtkDoubleArray> distance, inside, found, restPose;
-    restPose->SetName("RestPoseDistance");
+    restPose->SetName(clothtrack::arrays::RestPoseDistance);
     distance->SetName("MedianDistance");
     inside->SetName("InsideFraction");
     found->SetName("LandmarksFound");
@@ -146,7 +152,7 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
       vtkSmartPointer<vtkPolyData> bodyData = toPolyData(body);
       addBodyModelArrays(model, joints, bodyData);
       vtkFieldData* fd = bodyData->GetFieldData();
-      addFieldValue(fd, "FrameIndex", k);
+      addFieldValue(fd, clothtrack::arrays::FrameIndex, k);
       addFieldValue(fd, "FitStatus", static_cast<int>(f.status));
       vtkNew<vtkDoubleArray> pose;
       pose->SetName("Pose");
@@ -155,31 +161,21 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
       for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.translation[c]);
       fd->AddArray(pose);
       const double fromRest = fittedRestPoseDistance(f.status, f.pose);
-      addFieldValue(fd, "RestPoseDistance", fromRest);
+      addFieldValue(fd, clothtrack::arrays::RestPoseDistance, fromRest);
       addFieldValue(fd, "MedianDistance", f.medianDistance);
       addFieldValue(fd, "InsideFraction", f.insideFraction);
       bodies->SetBlock(k, bodyData);
       bodies->GetMetaData(static_cast<unsigned>(k))
           ->Set(vtkCompositeDataSet::NAME(), ("body_" + std::to_string(k)).c_str());
 
-      // Landmarks: none can be placed on a frame that failed.
-      const std::vector<OrientedPoint> points = orientedLandmarks(model, body);
-      std::vector<TransferredLandmark> transferred(points.size());
-      if (frames[k] && f.status != BodyFitStatus::Failed)
-      {
-        const SurfaceLocator locator(*frames[k]);
-        LandmarkTransferOptions transfer;
-        transfer.outsideTolerance = this->OutsideTolerance;
-        transfer.insideTolerance = this->InsideTolerance;
-        transferred = transferLandmarks(points, *frames[k], locator, transfer);
-      }
+      // Landmarks (none on a frame whose fit failed).
       vtkSmartPointer<vtkPolyData> landmarkData =
-          transferredLandmarksToPolyData(points, transferred);
+          transferredLandmarksToPolyData(stage.bodyLandmarks[k], stage.transferred[k]);
       addLandmarkIdentity(model, landmarkData);
-      addFieldValue(landmarkData->GetFieldData(), "RestPoseDistance", fromRest);
+      addFieldValue(landmarkData->GetFieldData(), clothtrack::arrays::RestPoseDistance, fromRest);
       landmarks->SetBlock(k, landmarkData);
       const double foundFraction =
-          landmarkData->GetFieldData()->GetArray("FoundFraction")->GetTuple1(0);
+          landmarkData->GetFieldData()->GetArray(clothtrack::arrays::LandmarksFound)->GetTuple1(0);
 
       if (f.status != BodyFitStatus::Ok)
         vtkWarningMacro(<< "body fit: " << frameName(sequence->GetBlock(k), k) << ": "

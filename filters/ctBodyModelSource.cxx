@@ -5,7 +5,7 @@
 #include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 #include <clothtrack/body/OrientedLandmarks.h>
 
 #include <vtkCellArray.h>

@@ -2,11 +2,11 @@
 
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Components.h>
-#include <clothtrack/Error.h>
-#include <clothtrack/MeshValidation.h>
+#include <clothtrack/base/Error.h>
 #include <clothtrack/body/BodyModelBuilder.h>
 #include <clothtrack/body/ProceduralBody.h>
+#include <clothtrack/mesh/Components.h>
+#include <clothtrack/mesh/MeshValidation.h>
 
 #include <vtkFloatArray.h>
 #include <vtkFlyingEdges3D.h>

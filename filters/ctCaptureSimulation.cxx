@@ -2,10 +2,10 @@
 
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Components.h>
-#include <clothtrack/Error.h>
-#include <clothtrack/MeshValidation.h>
-#include <clothtrack/SurfaceLocator.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/Components.h>
+#include <clothtrack/mesh/MeshValidation.h>
+#include <clothtrack/mesh/SurfaceLocator.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>

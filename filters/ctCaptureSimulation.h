@@ -6,7 +6,7 @@
 // order change, and optional holes and noise are added. C++ only (not wrapped).
 #include "ctFiltersModule.h"
 
-#include <clothtrack/TriangleMesh.h>
+#include <clothtrack/mesh/TriangleMesh.h>
 
 #include <vector>
 

@@ -1,9 +1,10 @@
 #include "ctCaptureSimulator.h"
 
+#include "ctArrayNames.h"
 #include "ctCaptureSimulation.h"
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -31,7 +32,7 @@ int ctCaptureSimulator::RequestData(vtkInformation*, vtkInformationVector** inpu
     options.noise = this->NoiseLevel;
     options.seed = static_cast<unsigned>(this->Seed);
     options.fillEnclosed = this->FillEnclosed;
-    if (vtkDataArray* frame = input->GetFieldData()->GetArray("FrameIndex"))
+    if (vtkDataArray* frame = input->GetFieldData()->GetArray(clothtrack::arrays::FrameIndex))
       options.seed += static_cast<unsigned>(frame->GetTuple1(0));
     clothtrack::SourceMap map;
     const clothtrack::TriangleMesh captured = clothtrack::simulateCapture(truth, options, &map);

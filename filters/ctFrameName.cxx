@@ -1,9 +1,10 @@
 #include "ctFrameName.h"
 
+#include "ctArrayNames.h"
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/MeshValidation.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/MeshValidation.h>
 
 #include <vtkDataObject.h>
 #include <vtkFieldData.h>
@@ -17,8 +18,8 @@ std::string frameName(vtkDataObject* block, int index)
 {
   std::string name = "frame " + std::to_string(index);
   if (block)
-    if (auto* files =
-            vtkStringArray::SafeDownCast(block->GetFieldData()->GetAbstractArray("SourceFile")))
+    if (auto* files = vtkStringArray::SafeDownCast(
+            block->GetFieldData()->GetAbstractArray(clothtrack::arrays::SourceFile)))
       if (files->GetNumberOfValues() > 0) name += " (" + files->GetValue(0) + ")";
   return name;
 }

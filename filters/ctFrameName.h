@@ -4,7 +4,7 @@
 // vtkPolyData). C++ only (not wrapped).
 #include "ctFiltersModule.h"
 
-#include <clothtrack/TriangleMesh.h>
+#include <clothtrack/mesh/TriangleMesh.h>
 
 #include <string>
 

@@ -2,9 +2,9 @@
 
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/Geodesic.h>
-#include <clothtrack/MeshValidation.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/Geodesic.h>
+#include <clothtrack/mesh/MeshValidation.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkInformation.h>

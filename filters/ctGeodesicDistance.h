@@ -33,7 +33,7 @@ public:
   vtkGetMacro(Method, int);
 
   /// Distances beyond this are not computed (reported as NaN); <= 0 means no limit.
-  vtkSetMacro(DistanceLimit, double);
+  vtkSetClampMacro(DistanceLimit, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(DistanceLimit, double);
 
   void AddSourcePoint(vtkIdType pointId);

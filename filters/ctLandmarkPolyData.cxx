@@ -1,6 +1,8 @@
 #include "ctLandmarkPolyData.h"
 
-#include <clothtrack/Error.h>
+#include "ctArrayNames.h"
+
+#include <clothtrack/base/Error.h>
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -21,14 +23,14 @@ transferredLandmarksToPolyData(const std::vector<OrientedPoint>& bodyPoints,
   positions->SetDataTypeToDouble();
   vtkNew<vtkCellArray> verts;
   vtkNew<vtkIntArray> valid, face;
-  valid->SetName("Valid");
-  face->SetName("FrameFace");
+  valid->SetName(clothtrack::arrays::LandmarkValid);
+  face->SetName(clothtrack::arrays::LandmarkFace);
   vtkNew<vtkDoubleArray> direction, bary, offset;
-  direction->SetName("Direction");
+  direction->SetName(clothtrack::arrays::LandmarkDirection);
   direction->SetNumberOfComponents(3);
-  bary->SetName("FrameBarycentric");
+  bary->SetName(clothtrack::arrays::LandmarkBarycentric);
   bary->SetNumberOfComponents(3);
-  offset->SetName("Offset");
+  offset->SetName(clothtrack::arrays::LandmarkOffset);
   int found = 0;
   for (size_t k = 0; k < transferred.size(); ++k)
   {
@@ -49,12 +51,12 @@ transferredLandmarksToPolyData(const std::vector<OrientedPoint>& bodyPoints,
   output->SetVerts(verts);
   output->GetPointData()->AddArray(valid);
   output->GetPointData()->AddArray(direction);
-  output->GetPointData()->SetActiveVectors("Direction");
+  output->GetPointData()->SetActiveVectors(clothtrack::arrays::LandmarkDirection);
   output->GetPointData()->AddArray(offset);
   output->GetPointData()->AddArray(face);
   output->GetPointData()->AddArray(bary);
   vtkNew<vtkDoubleArray> fraction;
-  fraction->SetName("FoundFraction");
+  fraction->SetName(clothtrack::arrays::LandmarksFound);
   fraction->InsertNextValue(transferred.empty() ? 0.0
                                                 : static_cast<double>(found) / transferred.size());
   output->GetFieldData()->AddArray(fraction);
@@ -64,10 +66,10 @@ transferredLandmarksToPolyData(const std::vector<OrientedPoint>& bodyPoints,
 void addLandmarkIdentity(const BodyModel& model, vtkPolyData* landmarks)
 {
   vtkNew<vtkIntArray> ids, vertexIds;
-  ids->SetName("LandmarkId");
-  vertexIds->SetName("VertexId");
+  ids->SetName(clothtrack::arrays::LandmarkId);
+  vertexIds->SetName(clothtrack::arrays::LandmarkVertex);
   vtkNew<vtkStringArray> names;
-  names->SetName("LandmarkName");
+  names->SetName(clothtrack::arrays::LandmarkName);
   for (size_t k = 0; k < model.landmarks.size(); ++k)
   {
     ids->InsertNextValue(static_cast<int>(k));
@@ -85,12 +87,12 @@ std::vector<OrientedSurfacePoint> landmarkSurfacePoints(vtkPolyData* landmarks, 
   std::vector<OrientedSurfacePoint> out;
   if (!landmarks || landmarks->GetNumberOfPoints() == 0) return out;
   vtkPointData* pd = landmarks->GetPointData();
-  vtkDataArray* valid = pd->GetArray("Valid");
-  vtkDataArray* face = pd->GetArray("FrameFace");
-  vtkDataArray* bary = pd->GetArray("FrameBarycentric");
-  vtkDataArray* direction = pd->GetArray("Direction");
-  vtkDataArray* ids = pd->GetArray("LandmarkId");
-  vtkDataArray* offset = pd->GetArray("Offset");
+  vtkDataArray* valid = pd->GetArray(clothtrack::arrays::LandmarkValid);
+  vtkDataArray* face = pd->GetArray(clothtrack::arrays::LandmarkFace);
+  vtkDataArray* bary = pd->GetArray(clothtrack::arrays::LandmarkBarycentric);
+  vtkDataArray* direction = pd->GetArray(clothtrack::arrays::LandmarkDirection);
+  vtkDataArray* ids = pd->GetArray(clothtrack::arrays::LandmarkId);
+  vtkDataArray* offset = pd->GetArray(clothtrack::arrays::LandmarkOffset);
   if (!valid || !face || !bary || !direction || bary->GetNumberOfComponents() != 3 ||
       direction->GetNumberOfComponents() != 3)
     throw Error(name + ": landmarks need point arrays Valid, FrameFace, FrameBarycentric (3) and "

@@ -5,9 +5,9 @@
 // Offset, FrameFace, FrameBarycentric and field data FoundFraction. C++ only (not wrapped).
 #include "ctFiltersModule.h"
 
-#include <clothtrack/LandmarkTransfer.h>
-#include <clothtrack/PatchCorrespondence.h>
 #include <clothtrack/body/BodyModel.h>
+#include <clothtrack/body/LandmarkTransfer.h>
+#include <clothtrack/correspondence/PatchCorrespondence.h>
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>

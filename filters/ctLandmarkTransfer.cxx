@@ -1,11 +1,12 @@
 #include "ctLandmarkTransfer.h"
 
+#include "ctArrayNames.h"
 #include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/LandmarkTransfer.h>
-#include <clothtrack/MeshValidation.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/body/LandmarkTransfer.h>
+#include <clothtrack/mesh/MeshValidation.h>
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -43,7 +44,8 @@ int ctLandmarkTransfer::RequestData(vtkInformation*, vtkInformationVector** inpu
     const TriangleMesh frame = toTriangleMesh(frameData, "landmark transfer frame");
     validateMesh(frame, "landmark transfer frame");
     vtkDataArray* normals = body->GetPointData()->GetArray("Normal");
-    vtkDataArray* directions = body->GetPointData()->GetArray("Direction");
+    vtkDataArray* directions =
+        body->GetPointData()->GetArray(clothtrack::arrays::LandmarkDirection);
     if (!normals || !directions || normals->GetNumberOfComponents() != 3 ||
         directions->GetNumberOfComponents() != 3)
       throw Error(
@@ -64,10 +66,12 @@ int ctLandmarkTransfer::RequestData(vtkInformation*, vtkInformationVector** inpu
         transferLandmarks(points, frame, locator, options);
 
     output->ShallowCopy(transferredLandmarksToPolyData(points, result));
-    for (const char* name : {"LandmarkId", "LandmarkName", "VertexId"})
+    for (const char* name : {clothtrack::arrays::LandmarkId, clothtrack::arrays::LandmarkName,
+                             clothtrack::arrays::LandmarkVertex})
       if (vtkAbstractArray* a = body->GetPointData()->GetAbstractArray(name))
         output->GetPointData()->AddArray(a);
-    const double found = output->GetFieldData()->GetArray("FoundFraction")->GetTuple1(0);
+    const double found =
+        output->GetFieldData()->GetArray(clothtrack::arrays::LandmarksFound)->GetTuple1(0);
     if (found == 0)
       vtkWarningMacro(<< "landmark transfer: no landmark could be placed on this frame");
   }

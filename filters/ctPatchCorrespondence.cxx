@@ -1,12 +1,15 @@
 #include "ctPatchCorrespondence.h"
 
+#include "ctArrayNames.h"
 #include "ctFrameName.h"
 #include "ctLandmarkPolyData.h"
 #include "ctNamedArrays.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/PatchCorrespondence.h>
-#include <clothtrack/TemplateSelection.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/pipeline/CorrespondenceStage.h>
+#include <clothtrack/pipeline/TemplateStage.h>
+#include <clothtrack/selection/TemplateSelection.h>
 
 #include <vtkCharArray.h>
 #include <vtkDoubleArray.h>
@@ -37,8 +40,8 @@ vtkSmartPointer<vtkPolyData> correspondencePolyData(vtkPolyData* templateData,
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->CopyStructure(templateData);
   const vtkIdType n = static_cast<vtkIdType>(c.vertices.size());
-  auto matched = namedArray<vtkCharArray>("Matched", n);
-  auto position = namedArray<vtkDoubleArray>("TargetPosition", n, 3);
+  auto matched = namedArray<vtkCharArray>(clothtrack::arrays::Matched, n);
+  auto position = namedArray<vtkDoubleArray>(clothtrack::arrays::TargetPosition, n, 3);
   auto face = namedArray<vtkIntArray>("TargetFace", n);
   auto bary = namedArray<vtkDoubleArray>("TargetBarycentric", n, 3);
   auto count = namedArray<vtkIntArray>("PatchCount", n);
@@ -107,6 +110,15 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
                                    "landmarks of " + frameName(sequence->GetBlock(k), k));
     };
 
+    std::vector<TriangleMesh> frames(n);
+    std::vector<const TriangleMesh*> pointers(n);
+    std::vector<std::vector<OrientedSurfacePoint>> landmarks(n);
+    for (int k = 0; k < n; ++k)
+    {
+      frames[k] = frameMesh(sequence, k);
+      pointers[k] = &frames[k];
+      landmarks[k] = frameLandmarks(k, frames[k]);
+    }
     // Template: given, or chosen by topology then pose or area uniformity.
     int chosen = this->TemplateFrame;
     if (chosen >= n)
@@ -114,23 +126,27 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
                   " is beyond the last frame (" + std::to_string(n - 1) + ")");
     if (chosen < 0)
     {
-      std::vector<FrameTopology> criteria;
-      for (int k = 0; k < n; ++k) criteria.push_back(frameTopology(frameMesh(sequence, k), 0.1));
-      const std::vector<double> restPose =
-          blockFieldValues(landmarkBlocks, "RestPoseDistance", NAN);
       TemplateSelectionOptions selection;
+      selection.minimumShellArea = this->MinimumShellArea;
+      selection.persistence = this->Persistence;
       selection.criterion = static_cast<clothtrack::TemplateCriterion>(this->TemplateCriterion);
-      chosen = selectTemplate(criteria, selection, restPose).chosen;
+      chosen = chooseTemplateFrame(
+                   pointers, selection,
+                   blockFieldValues(landmarkBlocks, clothtrack::arrays::RestPoseDistance, NAN))
+                   .chosen;
     }
     this->ChosenFrame = chosen;
     this->UpdateProgress(0.05);
     auto* templateData = vtkPolyData::SafeDownCast(sequence->GetBlock(chosen));
-    const TriangleMesh templateMesh = frameMesh(sequence, chosen);
-    const std::vector<OrientedSurfacePoint> templateLandmarks =
-        frameLandmarks(chosen, templateMesh);
+    const TriangleMesh& templateMesh = frames[chosen];
+    const std::vector<OrientedSurfacePoint>& templateLandmarks = landmarks[chosen];
     if (templateLandmarks.empty())
       throw Error("patch correspondence: the template " +
                   frameName(sequence->GetBlock(chosen), chosen) + " has no valid landmark");
+    for (int k = 0; k < n; ++k)
+      if (k != chosen && landmarks[k].empty())
+        vtkWarningMacro(<< "patch correspondence: " << frameName(sequence->GetBlock(k), k)
+                        << " has no landmark; no vertex is matched");
     PatchCorrespondenceOptions options;
     options.epsilon = this->Epsilon;
     options.minRadius = this->MinimumRadius;
@@ -142,53 +158,44 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
     options.consensusTolerance = this->SeedConsensusTolerance;
     options.consensusRelative = this->SeedConsensusRelativeTolerance;
     const TemplatePatches patches(templateMesh, templateLandmarks, options);
+    std::vector<FrameCorrespondence> results(n);
+    std::vector<int> all(n);
+    for (int k = 0; k < n; ++k) all[k] = k;
+    correspondFrames(
+        patches, chosen, all, [&](int k) -> const TriangleMesh& { return frames[k]; },
+        [&](int k) -> const std::vector<OrientedSurfacePoint>& { return landmarks[k]; },
+        [&](int k, FrameCorrespondence&& c) { results[k] = std::move(c); },
+        [this](double done)
+        {
+          this->UpdateProgress(0.05 + 0.9 * done);
+          return !this->GetAbortExecute();
+        });
 
     auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
     vtkTable* table = vtkTable::GetData(outputVector, 1);
     output->SetNumberOfBlocks(n);
     auto frameColumn = namedArray<vtkIntArray>("Frame");
-    auto matchedColumn = namedArray<vtkDoubleArray>("MatchedFraction");
+    auto matchedColumn = namedArray<vtkDoubleArray>(clothtrack::arrays::MatchedFraction);
     auto keptColumn = namedArray<vtkIntArray>("PatchesKept");
     auto pairsColumn = namedArray<vtkIntArray>("LandmarkPairs");
     auto outvotedColumn = namedArray<vtkIntArray>("SeedsOutvoted");
     auto secondsColumn = namedArray<vtkDoubleArray>("Seconds");
-    for (int k = 0; k < n && !this->GetAbortExecute(); ++k)
+    for (int k = 0; k < n; ++k)
     {
-      const auto start = std::chrono::steady_clock::now();
-      FrameCorrespondence c;
+      const FrameCorrespondence& c = results[k];
       int pairs = 0, kept = 0, outvoted = 0;
-      if (k == chosen)
+      if (k != chosen)
       {
-        // The template maps to itself.
-        c.vertices.resize(templateMesh.numVertices());
-        for (int f = 0; f < templateMesh.numFaces(); ++f)
-          for (int corner = 0; corner < 3; ++corner)
-          {
-            VertexMatch& m = c.vertices[templateMesh.F(f, corner)];
-            m.face = f;
-            m.bary = Vec3::Unit(corner);
-            m.position = templateMesh.vertex(templateMesh.F(f, corner));
-            m.patches = 1;
-          }
-      }
-      else
-      {
-        const TriangleMesh frame = frameMesh(sequence, k);
-        const std::vector<OrientedSurfacePoint> landmarks = frameLandmarks(k, frame);
-        if (landmarks.empty())
-          vtkWarningMacro(<< "patch correspondence: " << frameName(sequence->GetBlock(k), k)
-                          << " has no landmark; no vertex is matched");
-        c = patches.correspond(frame, landmarks);
         for (const auto& p : c.patches) kept += p.kept, outvoted += p.outvoted;
         for (const auto& t : templateLandmarks)
-          pairs += std::any_of(landmarks.begin(), landmarks.end(),
+          pairs += std::any_of(landmarks[k].begin(), landmarks[k].end(),
                                [&](const OrientedSurfacePoint& l) { return l.id == t.id; });
       }
       vtkSmartPointer<vtkPolyData> block = correspondencePolyData(templateData, c);
       vtkFieldData* fd = block->GetFieldData();
-      addFieldValue(fd, "FrameIndex", k);
-      addFieldValue(fd, "TemplateFrame", chosen);
-      addFieldValue(fd, "MatchedFraction", c.matchedFraction());
+      addFieldValue(fd, clothtrack::arrays::FrameIndex, k);
+      addFieldValue(fd, clothtrack::arrays::TemplateFrame, chosen);
+      addFieldValue(fd, clothtrack::arrays::MatchedFraction, c.matchedFraction());
       output->SetBlock(k, block);
       output->GetMetaData(static_cast<unsigned>(k))
           ->Set(vtkCompositeDataSet::NAME(), ("correspondence_" + std::to_string(k)).c_str());
@@ -197,10 +204,9 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
       keptColumn->InsertNextValue(kept);
       pairsColumn->InsertNextValue(pairs);
       outvotedColumn->InsertNextValue(outvoted);
-      secondsColumn->InsertNextValue(
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      this->UpdateProgress(0.05 + 0.95 * (k + 1) / n);
+      secondsColumn->InsertNextValue(c.seconds);
     }
+    this->UpdateProgress(1.0);
     for (vtkAbstractArray* column :
          {static_cast<vtkAbstractArray*>(frameColumn),
           static_cast<vtkAbstractArray*>(matchedColumn), static_cast<vtkAbstractArray*>(keptColumn),
@@ -231,4 +237,6 @@ void ctPatchCorrespondence::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeedConsensusRelativeTolerance: " << this->SeedConsensusRelativeTolerance
      << "\n";
   os << indent << "TemplateFrame: " << this->TemplateFrame << "\n";
+  os << indent << "MinimumShellArea: " << this->MinimumShellArea << "\n";
+  os << indent << "Persistence: " << this->Persistence << "\n";
 }

@@ -79,6 +79,13 @@ public:
   vtkGetMacro(SeedConsensusTolerance, double);
   vtkSetClampMacro(SeedConsensusRelativeTolerance, double, 0.0, 10.0);
   vtkGetMacro(SeedConsensusRelativeTolerance, double);
+  /// Automatic choice: components smaller than this (m^2) are not body parts (as in
+  /// ctTemplateSelection).
+  vtkSetClampMacro(MinimumShellArea, double, 0.0, 2.0);
+  vtkGetMacro(MinimumShellArea, double);
+  /// Automatic choice: a split counts only if it lasts this many consecutive frames.
+  vtkSetClampMacro(Persistence, int, 1, 50);
+  vtkGetMacro(Persistence, int);
   /// Automatic choice, last criterion: 0 area ratio (the paper's), 1 rest pose (default).
   vtkSetClampMacro(TemplateCriterion, int, 0, 1);
   vtkGetMacro(TemplateCriterion, int);
@@ -112,6 +119,8 @@ private:
   double SeedConsensusRadius = 1.0;
   double SeedConsensusTolerance = 0.03;
   double SeedConsensusRelativeTolerance = 0.08;
+  double MinimumShellArea = 0.1; // TemplateSelectionOptions::minimumShellArea
+  int Persistence = 3;           // TemplateSelectionOptions::persistence
   int TemplateCriterion = 1;
   int TemplateFrame = -1;
   int ChosenFrame = -1;

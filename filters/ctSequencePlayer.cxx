@@ -1,5 +1,7 @@
 #include "ctSequencePlayer.h"
 
+#include "ctArrayNames.h"
+
 #include <vtkAlgorithmOutput.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -21,7 +23,8 @@ namespace
 double blockTime(vtkDataObject* block)
 {
   auto* data = vtkPolyData::SafeDownCast(block);
-  vtkDataArray* time = data ? data->GetFieldData()->GetArray("TimeValue") : nullptr;
+  vtkDataArray* time =
+      data ? data->GetFieldData()->GetArray(clothtrack::arrays::TimeValue) : nullptr;
   return time && time->GetNumberOfTuples() > 0 ? time->GetTuple1(0) : std::nan("");
 }
 } // namespace

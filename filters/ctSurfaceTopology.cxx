@@ -4,10 +4,10 @@
 
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Components.h>
-#include <clothtrack/Error.h>
-#include <clothtrack/Laplacian.h>
-#include <clothtrack/MeshValidation.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/Components.h>
+#include <clothtrack/mesh/Laplacian.h>
+#include <clothtrack/mesh/MeshValidation.h>
 
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>

@@ -1,12 +1,13 @@
 #include "ctSyntheticCapture.h"
 
+#include "ctArrayNames.h"
 #include "ctBuiltinBodyModel.h"
 #include "ctCaptureSimulation.h"
 #include "ctMeshConversion.h"
 #include "ctRequestedPortOnly.h"
 #include "ctSyntheticSequence.h"
 
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -135,7 +136,7 @@ int ctSyntheticCapture::RequestData(vtkInformation* request, vtkInformationVecto
       addSourceMapArrays(map, output);
     }
     vtkNew<vtkIntArray> frameIndex;
-    frameIndex->SetName("FrameIndex");
+    frameIndex->SetName(clothtrack::arrays::FrameIndex);
     frameIndex->InsertNextValue(index);
     output->GetFieldData()->AddArray(frameIndex);
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), index / this->FrameRate);

@@ -1,8 +1,8 @@
 #include "ctSyntheticSequence.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
 #include <clothtrack/body/Motion.h>
+#include <clothtrack/mesh/Primitives.h>
 #include <clothtrack/synth/ClothSimulator.h>
 
 #include <random>

@@ -1,12 +1,13 @@
 #include "ctTemplateFit.h"
 
+#include "ctArrayNames.h"
 #include "ctFrameName.h"
 #include "ctLandmarkPolyData.h"
 #include "ctNamedArrays.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/MotionPrediction.h>
-#include <clothtrack/TemplateFit.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/fit/MotionPrediction.h>
+#include <clothtrack/fit/TemplateFit.h>
 
 #include <vtkCharArray.h>
 #include <vtkDataArray.h>
@@ -36,8 +37,8 @@ clothtrack::VertexTargets targetsOf(vtkPolyData* block, int n, const std::string
   using clothtrack::Error;
   if (!block || block->GetNumberOfPoints() != n)
     throw Error("the correspondence of " + name + " does not have one point per template vertex");
-  vtkDataArray* matched = block->GetPointData()->GetArray("Matched");
-  vtkDataArray* position = block->GetPointData()->GetArray("TargetPosition");
+  vtkDataArray* matched = block->GetPointData()->GetArray(clothtrack::arrays::Matched);
+  vtkDataArray* position = block->GetPointData()->GetArray(clothtrack::arrays::TargetPosition);
   if (!matched || !position || position->GetNumberOfComponents() != 3)
     throw Error("the correspondence of " + name +
                 " lacks the Matched or TargetPosition array (use ctPatchCorrespondence)");
@@ -146,7 +147,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     const int n = static_cast<int>(sequence->GetNumberOfBlocks());
     auto* first = vtkPolyData::SafeDownCast(correspondence->GetBlock(0));
     vtkDataArray* templateField =
-        first ? first->GetFieldData()->GetArray("TemplateFrame") : nullptr;
+        first ? first->GetFieldData()->GetArray(clothtrack::arrays::TemplateFrame) : nullptr;
     if (!templateField)
       throw Error("template fit: the correspondence blocks carry no TemplateFrame (use "
                   "ctPatchCorrespondence)");
@@ -174,16 +175,13 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     options.useCorrespondence = this->UseCorrespondence;
     options.useNearest = this->UseNearest;
 
-    // Frames and correspondences are converted when their turn comes; only the current one is
-    // held besides the results.
-    TriangleMesh frame;
+    std::vector<TriangleMesh> frames(n);
+    for (int k = 0; k < n; ++k) frames[k] = frameMesh(sequence, k);
+    SequenceFitHooks hooks;
+    hooks.frame = [&](int k) -> const TriangleMesh& { return frames[k]; };
+    // Correspondences are converted when their turn comes; only the current one is held.
     VertexTargets targets;
-    auto frameAt = [&](int k) -> const TriangleMesh&
-    {
-      frame = frameMesh(sequence, k);
-      return frame;
-    };
-    auto targetsAt = [&](int k) -> const VertexTargets*
+    hooks.targets = [&](int k) -> const VertexTargets*
     {
       const std::string name = frameName(sequence->GetBlock(k), k);
       targets = targetsOf(vtkPolyData::SafeDownCast(correspondence->GetBlock(k)), nv, name);
@@ -193,35 +191,28 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
       return &targets;
     };
     // With landmarks, each start follows their motion from the neighbouring frame.
-    StartPrediction predict;
     auto* landmarkBlocks = this->GetNumberOfInputConnections(2) > 0
                                ? vtkMultiBlockDataSet::GetData(inputVector[2], 0)
                                : nullptr;
+    std::vector<std::vector<OrientedSurfacePoint>> landmarks;
     if (landmarkBlocks && this->PredictRadius > 0)
     {
       checkOneBlockPerFrame(sequence, landmarkBlocks, "template fit", "landmarks");
-      predict = [&](int k, int from, const Points& fit)
-      {
-        const TriangleMesh a = frameMesh(sequence, from), b = frameMesh(sequence, k);
-        auto landmarksOf = [&](int f, const TriangleMesh& mesh)
-        {
-          return landmarkSurfacePoints(
-              vtkPolyData::SafeDownCast(landmarkBlocks->GetBlock(static_cast<unsigned>(f))),
-              mesh.numFaces(), "landmarks of " + frameName(sequence->GetBlock(f), f));
-        };
-        std::vector<Vec3> before, after;
-        pairLandmarks(a, landmarksOf(from, a), b, landmarksOf(k, b), before, after);
-        return predictMotion(fit, before, after, this->PredictRadius);
-      };
+      for (int k = 0; k < n; ++k)
+        landmarks.push_back(landmarkSurfacePoints(
+            vtkPolyData::SafeDownCast(landmarkBlocks->GetBlock(static_cast<unsigned>(k))),
+            frames[k].numFaces(), "landmarks of " + frameName(sequence->GetBlock(k), k)));
+      hooks.start = landmarkStartPrediction([&](int k) -> const TriangleMesh& { return frames[k]; },
+                                            [&](int k) -> const std::vector<OrientedSurfacePoint>&
+                                            { return landmarks[k]; },
+                                            this->PredictRadius);
     }
-    const std::vector<FrameFit> fits = fitTemplateSequence(
-        templateMesh, j, n, frameAt, targetsAt, options,
-        [this](int done, int total)
-        {
-          this->UpdateProgress(static_cast<double>(done) / total);
-          return !this->GetAbortExecute();
-        },
-        predict);
+    hooks.progress = [this](double done)
+    {
+      this->UpdateProgress(done);
+      return !this->GetAbortExecute();
+    };
+    const std::vector<FrameFit> fits = fitTemplateSequence(templateMesh, j, n, hooks, options);
 
     auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
     vtkTable* table = vtkTable::GetData(outputVector, 1);
@@ -238,11 +229,12 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     {
       const FrameFit& fit = fits[k];
       vtkSmartPointer<vtkPolyData> block = alignedPolyData(templateData, templateMesh, fit);
-      addFieldValue(block->GetFieldData(), "FrameIndex", k);
-      addFieldValue(block->GetFieldData(), "TemplateFrame", j);
+      addFieldValue(block->GetFieldData(), clothtrack::arrays::FrameIndex, k);
+      addFieldValue(block->GetFieldData(), clothtrack::arrays::TemplateFrame, j);
       // The frame's own time and name, so that players and writers label it as its input.
       if (auto* input = vtkPolyData::SafeDownCast(sequence->GetBlock(static_cast<unsigned>(k))))
-        for (const char* name : {"TimeValue", "FrameNumber", "SourceFile"})
+        for (const char* name : {clothtrack::arrays::TimeValue, clothtrack::arrays::FrameNumber,
+                                 clothtrack::arrays::SourceFile})
           if (vtkAbstractArray* array = input->GetFieldData()->GetAbstractArray(name))
             block->GetFieldData()->AddArray(array);
       output->SetBlock(k, block);

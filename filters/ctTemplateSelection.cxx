@@ -1,11 +1,12 @@
 #include "ctTemplateSelection.h"
 
+#include "ctArrayNames.h"
 #include "ctMeshConversion.h"
 #include "ctNamedArrays.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/MeshValidation.h>
-#include <clothtrack/TemplateSelection.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/MeshValidation.h>
+#include <clothtrack/selection/TemplateSelection.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -100,7 +101,7 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
                     << " frames, the sequence " << n);
       return 0;
     }
-    restPose = blockFieldValues(body, "RestPoseDistance", NAN);
+    restPose = blockFieldValues(body, clothtrack::arrays::RestPoseDistance, NAN);
   }
   TemplateSelectionOptions options;
   options.minimumShellArea = this->MinimumShellArea;
@@ -118,7 +119,7 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->ShallowCopy(sequence->GetBlock(static_cast<unsigned>(this->ChosenFrame)));
   vtkNew<vtkIntArray> chosen;
-  chosen->SetName("TemplateFrame");
+  chosen->SetName(clothtrack::arrays::TemplateFrame);
   chosen->InsertNextValue(this->ChosenFrame);
   output->GetFieldData()->AddArray(chosen);
   vtkNew<vtkStringArray> decidedBy;
@@ -153,7 +154,8 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
   column(
       "Area", [&](int k) { return frames[k].area; }, vtkNew<vtkDoubleArray>().GetPointer());
   column(
-      "RestPoseDistance", [&](int k) { return restPose.empty() ? NAN : restPose[k]; },
+      clothtrack::arrays::RestPoseDistance,
+      [&](int k) { return restPose.empty() ? NAN : restPose[k]; },
       vtkNew<vtkDoubleArray>().GetPointer());
   column(
       "Candidate", [&](int k) { return static_cast<int>(selection.candidate[k]); },

@@ -2,7 +2,7 @@
 
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>

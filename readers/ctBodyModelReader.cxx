@@ -2,7 +2,7 @@
 
 #include "ctBodyModelIO.h"
 
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>

@@ -1,8 +1,8 @@
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/MeshIO.h>
-#include <clothtrack/MeshValidation.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/io/MeshIO.h>
+#include <clothtrack/mesh/MeshValidation.h>
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>

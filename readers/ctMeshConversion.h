@@ -3,7 +3,7 @@
 // Conversions between vtkPolyData and the core's TriangleMesh (not wrapped: C++ only).
 #include "ctReadersModule.h"
 
-#include <clothtrack/TriangleMesh.h>
+#include <clothtrack/mesh/TriangleMesh.h>
 
 #include <vtkSmartPointer.h>
 

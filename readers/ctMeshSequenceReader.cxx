@@ -1,10 +1,11 @@
 #include "ctMeshSequenceReader.h"
 
+#include "ctArrayNames.h"
 #include "ctMeshConversion.h"
 #include "ctRequestedPortOnly.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/FrameList.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/io/FrameList.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -120,16 +121,16 @@ bool ctMeshSequenceReader::ReadFrameInto(int index, vtkPolyData* output)
   }
 
   vtkNew<vtkStringArray> source;
-  source->SetName("SourceFile");
+  source->SetName(clothtrack::arrays::SourceFile);
   source->InsertNextValue(path);
   vtkNew<vtkIntArray> frameIndex;
-  frameIndex->SetName("FrameIndex");
+  frameIndex->SetName(clothtrack::arrays::FrameIndex);
   frameIndex->InsertNextValue(index);
   vtkNew<vtkIntArray> frameNumber;
-  frameNumber->SetName("FrameNumber");
+  frameNumber->SetName(clothtrack::arrays::FrameNumber);
   frameNumber->InsertNextValue(static_cast<int>(clothtrack::frameNumberFromName(path)));
   vtkNew<vtkDoubleArray> time;
-  time->SetName("TimeValue");
+  time->SetName(clothtrack::arrays::TimeValue);
   time->InsertNextValue(index / this->FrameRate);
   output->GetFieldData()->AddArray(source);
   output->GetFieldData()->AddArray(frameIndex);

@@ -1,8 +1,9 @@
 #include "ctMeshSequenceWriter.h"
 
+#include "ctArrayNames.h"
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 
 #include <vtkDataArray.h>
 #include <vtkErrorCode.h>
@@ -77,7 +78,8 @@ vtkTypeBool ctMeshSequenceWriter::ProcessRequest(vtkInformation* request,
       double time = k / this->FrameRate;
       vtkDataObject* block = blocks->GetBlock(k);
       if (auto* poly = vtkPolyData::SafeDownCast(block))
-        if (vtkDataArray* t = poly->GetFieldData()->GetArray("TimeValue")) time = t->GetTuple1(0);
+        if (vtkDataArray* t = poly->GetFieldData()->GetArray(clothtrack::arrays::TimeValue))
+          time = t->GetTuple1(0);
       ok = this->WriteFrame(block, static_cast<int>(k), time);
       this->UpdateProgress(static_cast<double>(k + 1) / n);
     }

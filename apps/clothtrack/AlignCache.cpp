@@ -28,22 +28,16 @@ Vec3 vec(const nlohmann::json& j)
 }
 } // namespace
 
-std::vector<double> restPoseDistances(const BodyStage& stage)
-{
-  std::vector<double> out;
-  for (size_t k = 0; k < stage.poses.size(); ++k)
-    out.push_back(fittedRestPoseDistance(stage.status[k], stage.poses[k]));
-  return out;
-}
-
 nlohmann::json bodyFitJson(const std::string& modelPath, const std::vector<std::string>& files,
                            const BodyStage& stage)
 {
   nlohmann::json frames = nlohmann::json::array();
-  for (size_t k = 0; k < stage.poses.size(); ++k)
-    frames.push_back(bodyFrameJson(files[k], stage.status[k], stage.poses[k]));
+  for (size_t k = 0; k < stage.body.frames.size(); ++k)
+    frames.push_back(
+        bodyFrameJson(files[k], stage.body.frames[k].status, stage.body.frames[k].pose));
+  const Eigen::VectorXd& beta = stage.body.beta;
   return {{"model", modelPath},
-          {"beta", std::vector<double>(stage.beta.data(), stage.beta.data() + stage.beta.size())},
+          {"beta", std::vector<double>(beta.data(), beta.data() + beta.size())},
           {"per_frame", frames}};
 }
 
@@ -77,12 +71,14 @@ std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::
     BodyStage out;
     const nlohmann::json& body = j.at("body");
     const std::vector<double> beta = body.at("beta").get<std::vector<double>>();
-    out.beta =
+    out.body.beta =
         Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
     for (const auto& frame : body.at("per_frame"))
     {
-      out.poses.push_back(bodyFramePose(frame));
-      out.status.push_back(bodyFrameStatus(frame));
+      BodyFrameFit fit;
+      fit.pose = bodyFramePose(frame);
+      fit.status = bodyFrameStatus(frame);
+      out.body.frames.push_back(fit);
     }
     for (const auto& frame : j.at("landmarks"))
     {

@@ -2,9 +2,9 @@
 // Intermediate results of 'clothtrack align' kept under OUT/work, so that an interrupted run
 // resumes where it stopped. Every file is written beside and renamed: a file that exists is
 // complete. A file made for other inputs (other frame files) is not reused.
-#include <clothtrack/PatchCorrespondence.h>
-#include <clothtrack/TemplateFit.h>
-#include <clothtrack/body/BodyFit.h>
+#include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/fit/TemplateFit.h>
+#include <clothtrack/pipeline/BodyStage.h>
 
 #include <nlohmann/json.hpp>
 
@@ -14,20 +14,14 @@
 
 namespace clothtrack::app
 {
-using FrameLandmarks = std::vector<OrientedSurfacePoint>;
-
-/// Stage 1 output: the fitted body (shape, pose and status per frame) and the landmarks of every
-/// frame. Poses and statuses are empty when the body fit was skipped.
+/// What the work folder keeps of stage 1: the fitted body (shape; pose and status per frame, the
+/// rest of each frame's record is not kept) and the landmarks of every frame. The frames are
+/// empty when the body fit was skipped.
 struct BodyStage
 {
-  Eigen::VectorXd beta;
-  std::vector<BodyPose> poses;
-  std::vector<BodyFitStatus> status;
+  BodyFitResult body;
   std::vector<FrameLandmarks> landmarks;
 };
-
-/// Each frame's fittedRestPoseDistance; empty when the body fit was skipped.
-std::vector<double> restPoseDistances(const BodyStage& stage);
 
 /// The fitted body in the layout of the body_fit.json of 'clothtrack body-fit' (its per-frame
 /// figures apart): model, beta, and per frame the file, status, pose and rest_pose_distance.

@@ -12,13 +12,14 @@
 #include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/FrameList.h>
-#include <clothtrack/InsideTest.h>
-#include <clothtrack/LandmarkTransfer.h>
-#include <clothtrack/Parallel.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
 #include <clothtrack/body/BodyFit.h>
+#include <clothtrack/body/LandmarkTransfer.h>
 #include <clothtrack/body/OrientedLandmarks.h>
+#include <clothtrack/io/FrameList.h>
+#include <clothtrack/mesh/InsideTest.h>
+#include <clothtrack/pipeline/BodyStage.h>
 
 #include <nlohmann/json.hpp>
 
@@ -99,7 +100,19 @@ int runBodyFit(const Args& args)
   const BodyModel& model = bodyModel(modelPath, ownModel);
 
   const auto fitStart = std::chrono::steady_clock::now();
-  const BodyFitResult result = fitBodiesWithProgress(model, frames, fit);
+  const int n = static_cast<int>(files.size());
+  BodyStageResult stage;
+  {
+    Progress fitProgress("body-fit", n);
+    stage = fitBodyAndLandmarks(model, frames, {fit, transfer},
+                                [&](double done)
+                                {
+                                  fitProgress.step(static_cast<int>(n * done));
+                                  return true;
+                                });
+    fitProgress.finish();
+  }
+  const BodyFitResult& result = stage.body;
   const double fitSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - fitStart).count();
 
@@ -110,12 +123,9 @@ int runBodyFit(const Args& args)
   nlohmann::json frameRecords = nlohmann::json::array();
   int found = 0, total = 0;
   double insideSum = 0.0;
-  // Bodies, landmarks and the inside test, frames in parallel; then written in order.
-  const int n = static_cast<int>(files.size());
+  // Bodies and the inside test, frames in parallel; then written in order.
   std::vector<TriangleMesh> bodies(n);
   std::vector<Points> bodyJoints(n);
-  std::vector<std::vector<OrientedPoint>> bodyPoints(n);
-  std::vector<std::vector<TransferredLandmark>> transfers(n);
   std::vector<double> insideFractions(n, 0.0);
   parallelFor(
       0, n,
@@ -123,14 +133,8 @@ int runBodyFit(const Args& args)
       {
         const BodyFrameFit& f = result.frames[k];
         bodies[k] = model.posed(result.beta, f.pose, &bodyJoints[k]);
-        bodyPoints[k] = orientedLandmarks(model, bodies[k]);
-        transfers[k].resize(bodyPoints[k].size());
         if (frames[k] && f.status != BodyFitStatus::Failed)
-        {
-          const SurfaceLocator locator(*frames[k]);
-          transfers[k] = transferLandmarks(bodyPoints[k], *frames[k], locator, transfer);
-          insideFractions[k] = fractionInside(locator, bodies[k].V);
-        }
+          insideFractions[k] = fractionInside(SurfaceLocator(*frames[k]), bodies[k].V);
       },
       1);
   Progress progress("writing", n);
@@ -144,8 +148,8 @@ int runBodyFit(const Args& args)
     const double time = static_cast<double>(k) / seq.fps;
     bodyEntries.push_back({time, writeCollectionFrame(bodiesPvd, k, bodyData, false)});
 
-    const std::vector<OrientedPoint>& points = bodyPoints[k];
-    const std::vector<TransferredLandmark>& transferred = transfers[k];
+    const std::vector<OrientedPoint>& points = stage.bodyLandmarks[k];
+    const std::vector<TransferredLandmark>& transferred = stage.transferred[k];
     const double inside = insideFractions[k];
     vtkSmartPointer<vtkPolyData> landmarkData = transferredLandmarksToPolyData(points, transferred);
     addLandmarkIdentity(model, landmarkData);

@@ -6,7 +6,7 @@
 #include "ctBuiltinBodyModel.h"
 #include "ctMeshConversion.h"
 
-#include <clothtrack/MeshIO.h>
+#include <clothtrack/io/MeshIO.h>
 
 #include <vtkPolyData.h>
 

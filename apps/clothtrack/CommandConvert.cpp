@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Options.h"
 #include "Progress.h"
+#include "ctArrayNames.h"
 
 #include "ctMeshConversion.h"
 
@@ -11,7 +12,7 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
-#include <clothtrack/FrameList.h>
+#include <clothtrack/io/FrameList.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -52,7 +53,7 @@ int runConvert(const Args& args)
     for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     vtkSmartPointer<vtkPolyData> poly = toPolyData(mesh);
     vtkNew<vtkStringArray> source;
-    source->SetName("SourceFile");
+    source->SetName(clothtrack::arrays::SourceFile);
     source->InsertNextValue(frames[k]);
     poly->GetFieldData()->AddArray(source);
     const std::string relative = writeCollectionFrame(output, static_cast<int>(k), poly, obj);

@@ -8,9 +8,9 @@
 
 #include "ctMeshConversion.h"
 
-#include <clothtrack/AlignmentError.h>
-#include <clothtrack/Error.h>
-#include <clothtrack/FrameList.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/eval/AlignmentError.h>
+#include <clothtrack/io/FrameList.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>

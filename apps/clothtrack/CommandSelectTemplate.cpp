@@ -7,9 +7,10 @@
 
 #include "ctMeshConversion.h"
 
-#include <clothtrack/FrameList.h>
-#include <clothtrack/TemplateSelection.h>
 #include <clothtrack/body/BodyFit.h>
+#include <clothtrack/io/FrameList.h>
+#include <clothtrack/pipeline/BodyStage.h>
+#include <clothtrack/selection/TemplateSelection.h>
 
 #include <nlohmann/json.hpp>
 
@@ -30,10 +31,7 @@ std::vector<double> fitRestPoseDistances(const std::vector<TriangleMesh>& meshes
   const BodyModel& model = bodyModel(modelPath, ownModel);
   std::vector<const TriangleMesh*> pointers;
   for (const auto& m : meshes) pointers.push_back(&m);
-  const BodyFitResult fit = fitBodiesWithProgress(model, pointers);
-  std::vector<double> out;
-  for (const BodyFrameFit& f : fit.frames) out.push_back(fittedRestPoseDistance(f.status, f.pose));
-  return out;
+  return restPoseDistances(fitBodiesWithProgress(model, pointers));
 }
 
 /// The same from the body_fit.json of 'clothtrack body-fit', which must list the same frames.

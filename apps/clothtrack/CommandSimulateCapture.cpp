@@ -8,8 +8,8 @@
 
 #include "ctMeshConversion.h"
 
-#include <clothtrack/FrameList.h>
-#include <clothtrack/MeshIO.h>
+#include <clothtrack/io/FrameList.h>
+#include <clothtrack/io/MeshIO.h>
 
 #include <vtkPolyData.h>
 

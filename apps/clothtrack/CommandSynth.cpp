@@ -15,7 +15,7 @@
 #include "ctMeshConversion.h"
 #include "ctSyntheticSequence.h"
 
-#include <clothtrack/MeshIO.h>
+#include <clothtrack/io/MeshIO.h>
 
 #include <vtkPolyData.h>
 

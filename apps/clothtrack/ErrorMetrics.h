@@ -3,8 +3,8 @@
 // metrics.json.
 #include "ctMeshConversion.h"
 
-#include <clothtrack/AlignmentError.h>
-#include <clothtrack/MarkerError.h>
+#include <clothtrack/eval/AlignmentError.h>
+#include <clothtrack/eval/MarkerError.h>
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,7 @@
 
 #include "ctMeshConversion.h"
 
-#include <clothtrack/TemplateSelection.h>
+#include <clothtrack/selection/TemplateSelection.h>
 
 #include <boost/program_options.hpp>
 

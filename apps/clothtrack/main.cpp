@@ -1,7 +1,7 @@
 // clothtrack: command-line front end of the ClothTrack toolkit.
 #include "Commands.h"
 
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 
 #include <vtkObject.h>
 #include <vtkOutputWindow.h>

@@ -1,0 +1,205 @@
+#include "AlignOptions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace clothtrack::app
+{
+namespace
+{
+/// --stages: "wc,ws,wd,wt/wc,ws,wd,wt/...", every weight a finite number >= 0.
+std::vector<FitStage> parseStages(const std::string& spec)
+{
+  std::vector<FitStage> stages;
+  std::stringstream all(spec);
+  for (std::string item; std::getline(all, item, '/');)
+  {
+    double w[4];
+    char tail = 0;
+    if (std::sscanf(item.c_str(), "%lf,%lf,%lf,%lf%c", &w[0], &w[1], &w[2], &w[3], &tail) != 4 ||
+        !std::all_of(w, w + 4, [](double x) { return std::isfinite(x) && x >= 0; }))
+      throw UsageError{"--stages: '" + item +
+                       "' is not four weights wc,ws,wd,wt (numbers, 0 or more)"};
+    stages.push_back({w[0], w[1], w[2], w[3]});
+  }
+  if (stages.empty()) throw UsageError{"--stages: no stage"};
+  return stages;
+}
+
+nlohmann::json stagesJson(const std::vector<FitStage>& stages)
+{
+  nlohmann::json out = nlohmann::json::array();
+  for (const FitStage& s : stages)
+    out.push_back({s.correspondence, s.smoothness, s.nearest, s.temporal});
+  return out;
+}
+
+void addFitOptions(po::options_description& options, AlignSettings& s, std::string& stageSpec)
+{
+  TemplateFitOptions& fit = s.fit;
+  options.add_options()("solver", po::value(&s.solver)->default_value(s.solver),
+                        "template fit solver: exact or lbfgs")(
+      "solver-tolerance", po::value(&fit.solverTolerance)->default_value(fit.solverTolerance),
+      "exact solver: relative residual of each stage's last round")(
+      "intermediate-tolerance",
+      po::value(&fit.intermediateTolerance)->default_value(fit.intermediateTolerance),
+      "exact solver: relative residual of the rounds before a stage's last")(
+      "factor-backend", po::value(&s.factorBackend)->default_value(s.factorBackend),
+      "exact solver: factorisation of the preconditioner, block (the library's own) or cholmod "
+      "(SuiteSparse)")(
+      "refactor-steps", po::value(&fit.refactorSteps)->default_value(fit.refactorSteps),
+      "exact solver: renew a stage's factorisation after a frame that needed more conjugate-"
+      "gradient steps per round than this (0: only when they fail)")(
+      "nearest-reuse", po::value(&fit.nearestReuse)->default_value(fit.nearestReuse),
+      "metres: a template vertex that moved less than this since its last closest-point search "
+      "is projected onto the same triangle (0: search every round)")(
+      "stages", po::value(&stageSpec),
+      "template fit weight stages wc,ws,wd,wt separated by '/' (default the paper's: "
+      "1,400,0,0.1/1,200,10,0.1/0,100,10,0.1/0,50,10,0.1)")(
+      "predict-radius", po::value(&s.predictRadius)->default_value(s.predictRadius),
+      "each frame's fit starts from its neighbour's moved by the landmarks' locally rigid motion, "
+      "weighted over this radius (m; 0: from the neighbour's fit as it is)")(
+      "no-correspondence", po::bool_switch(),
+      "ablation: fit without the correspondence term Ec (with --predict-radius 0: nearest "
+      "points alone, a sequential non-rigid ICP)");
+}
+
+void addCorrespondenceOptions(po::options_description& options, AlignSettings& s,
+                              std::string& criterion)
+{
+  PatchCorrespondenceOptions& patches = s.patches;
+  TemplateSelectionOptions& selection = s.selection;
+  options.add_options()("template", po::value(&s.forcedTemplate)->default_value(-1),
+                        "template frame within the selected frames (-1: chosen automatically)")(
+      "template-criterion", po::value(&criterion)->default_value(criterion),
+      "last template criterion after the topology: rest-pose (fitted body closest to the rest "
+      "pose) or area-ratio (the paper's: most uniform mesh)")(
+      "min-shell-area",
+      po::value(&selection.minimumShellArea)->default_value(selection.minimumShellArea),
+      "template choice: components smaller than this (m^2) are not counted as body parts")(
+      "persistence", po::value(&selection.persistence)->default_value(selection.persistence),
+      "template choice: a split counts only if it lasts this many consecutive frames")(
+      "epsilon", po::value(&patches.epsilon)->default_value(patches.epsilon),
+      "near-isometry tolerance of the patches (m)")(
+      "max-radius", po::value(&patches.maxRadius)->default_value(patches.maxRadius),
+      "patch radius tau_d (m)")("min-radius",
+                                po::value(&patches.minRadius)->default_value(patches.minRadius),
+                                "smallest patch kept, tau_s (m)")(
+      "seed-consensus", po::value(&patches.minConsensus)->default_value(patches.minConsensus),
+      "share of the nearby landmarks whose geodesic distances a landmark pair must preserve to "
+      "seed a patch (0: every pair seeds one)");
+}
+
+void addRunOptions(po::options_description& options, AlignSettings& s)
+{
+  options.add_options()("input", po::value(&s.input)->required(),
+                        "folder, glob pattern, list file or mesh file")(
+      "output,o", po::value(&s.output)->required(), "output folder")(
+      "ground-truth", po::value(&s.truthInput),
+      "ground-truth sequence (one connectivity, same frames as INPUT): adds the errors")(
+      "frames", po::value(&s.frameSpec),
+      "frames A:B of the input (A included, B not; either may be left out)")(
+      "model", po::value(&s.modelPath), "body model file (default: the built-in model)")(
+      "threads", po::value(&s.threads)->default_value(0),
+      "threads (0: all cores)")("skip-bad-frames", po::bool_switch(&s.skipBadFrames),
+                                "leave out unreadable frames with a warning instead of stopping")(
+      "no-report", po::bool_switch(&s.noReport), "skip the plots, renders and report.html")(
+      "truth-distance", po::value(&s.truthDistance)->default_value(s.truthDistance),
+      "template vertices further than this from the ground truth have no error (m)")(
+      "markers", po::value(&s.markersPath),
+      "marker trajectories (CSV frame,time,marker,x,y,z, frames numbered as the input's): adds "
+      "the error at each marker's nearest template vertex")(
+      "work", po::value(&s.workDir),
+      "folder for intermediate results (default OUT/work); runs on the same input with other fit "
+      "options may share it and reuse its landmarks and correspondences");
+}
+
+void check(const AlignSettings& s)
+{
+  const TemplateFitOptions& fit = s.fit;
+  const PatchCorrespondenceOptions& patches = s.patches;
+  if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
+  if (s.factorBackend != "block" && s.factorBackend != "cholmod")
+    throw UsageError{"--factor-backend must be block or cholmod (got '" + s.factorBackend + "')"};
+  if (!factorBackendAvailable(s.fit.factorBackend))
+    throw UsageError{"--factor-backend cholmod: this build has no CHOLMOD (libsuitesparse-dev)"};
+  if (s.solver != "exact" && s.solver != "lbfgs")
+    throw UsageError{"--solver must be exact or lbfgs (got '" + s.solver + "')"};
+  if (!(patches.epsilon > 0) || !(patches.minRadius >= 0) || !(patches.maxRadius > 0))
+    throw UsageError{"--epsilon and --max-radius must be positive, --min-radius at least 0"};
+  if (!(patches.minConsensus >= 0 && patches.minConsensus <= 1))
+    throw UsageError{"--seed-consensus must be between 0 and 1"};
+  if (!(s.selection.minimumShellArea >= 0)) throw UsageError{"--min-shell-area must be 0 or more"};
+  if (s.selection.persistence < 1) throw UsageError{"--persistence must be at least 1"};
+  if (!(s.truthDistance > 0)) throw UsageError{"--truth-distance must be positive"};
+  if (!(s.predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
+  if (!(fit.solverTolerance > 0 && fit.solverTolerance < 1) ||
+      !(fit.intermediateTolerance > 0 && fit.intermediateTolerance < 1))
+    throw UsageError{"--solver-tolerance and --intermediate-tolerance must be in (0, 1)"};
+  if (!(fit.refactorSteps >= 0) || !std::isfinite(fit.refactorSteps))
+    throw UsageError{"--refactor-steps must be 0 or more"};
+  if (!(fit.nearestReuse >= 0) || !std::isfinite(fit.nearestReuse))
+    throw UsageError{"--nearest-reuse must be 0 or more"};
+}
+
+const char* usageOf(AlignMode mode)
+{
+  switch (mode)
+  {
+  case AlignMode::CorrespondOnly:
+    return "clothtrack correspond INPUT -o OUT [--work DIR] [options] (stages 1 and 2 into the "
+           "work folder, for 'clothtrack fit')";
+  case AlignMode::FitOnly:
+    return "clothtrack fit INPUT -o OUT [--work DIR] [options] (stage 3 from the work folder "
+           "that 'clothtrack correspond' filled)";
+  default:
+    return "clothtrack align INPUT -o OUT [--ground-truth GT] [options]";
+  }
+}
+} // namespace
+
+bool AlignSettings::needLandmarks() const
+{
+  return fit.useCorrespondence || predictRadius > 0 ||
+         (forcedTemplate < 0 && selection.criterion == TemplateCriterion::RestPose);
+}
+
+nlohmann::json AlignSettings::fitKey() const
+{
+  return {{"solver", solver},
+          {"tolerances", {fit.solverTolerance, fit.intermediateTolerance}},
+          {"refactor_steps", fit.refactorSteps},
+          {"factor_backend", factorBackend},
+          {"nearest_reuse", fit.nearestReuse},
+          {"truth_distance", truthDistance},
+          {"predict_radius", predictRadius},
+          {"use_correspondence", fit.useCorrespondence},
+          {"stages", stagesJson(fit.stages)}};
+}
+
+std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode)
+{
+  AlignSettings s;
+  s.mode = mode;
+  std::string criterion = "rest-pose", stageSpec;
+  po::options_description options("align options");
+  addRunOptions(options, s);
+  addCorrespondenceOptions(options, s, criterion);
+  addFitOptions(options, s, stageSpec);
+  addSequenceOptions(options, s.sequence);
+  po::positional_options_description positional;
+  positional.add("input", 1);
+  po::variables_map values;
+  if (!parseOptions(args, usageOf(mode), options, positional, values)) return std::nullopt;
+  s.fit.solver = s.solver == "exact" ? FitSolver::Exact : FitSolver::LBFGS;
+  s.fit.factorBackend =
+      s.factorBackend == "cholmod" ? FactorBackend::Cholmod : FactorBackend::Block;
+  if (!stageSpec.empty()) s.fit.stages = parseStages(stageSpec);
+  s.fit.useCorrespondence = !values["no-correspondence"].as<bool>();
+  s.selection.criterion = parseTemplateCriterion(criterion);
+  check(s);
+  return s;
+}
+} // namespace clothtrack::app

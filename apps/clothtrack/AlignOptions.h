@@ -1,0 +1,53 @@
+#pragma once
+// The options of 'clothtrack align', 'correspond' and 'fit': their parsing and checks. Every
+// default is the core's own (the options structs of the stages).
+#include "Commands.h"
+#include "Options.h"
+
+#include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/fit/TemplateFit.h>
+#include <clothtrack/selection/TemplateSelection.h>
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+
+namespace clothtrack::app
+{
+/// What a run does: everything ('align'), stages 1 and 2 into the work folder ('correspond'), or
+/// stage 3 and the evaluation from a work folder that 'correspond' filled ('fit').
+enum class AlignMode
+{
+  Full,
+  CorrespondOnly,
+  FitOnly
+};
+
+struct AlignSettings
+{
+  AlignMode mode = AlignMode::Full;
+  std::string input, output, truthInput, frameSpec, modelPath, markersPath, workDir;
+  std::string solver = "exact";
+  std::string factorBackend = factorBackendName(FactorBackend::Block);
+  SequenceOptions sequence;
+  int threads = 0;
+  int forcedTemplate = -1; ///< -1: chosen automatically
+  TemplateSelectionOptions selection;
+  double truthDistance = 0.03;
+  double predictRadius = 0.3;
+  TemplateFitOptions fit;
+  PatchCorrespondenceOptions patches;
+  bool skipBadFrames = false;
+  bool noReport = false;
+
+  /// The body fit gives the landmarks (correspondences, start prediction) and the poses that
+  /// choose the template; when none of these is wanted, it is skipped.
+  bool needLandmarks() const;
+  /// The options that decide the aligned frames (run.json): results made with others are redone.
+  nlohmann::json fitKey() const;
+};
+
+/// The settings from the command line; nullopt after --help. Throws UsageError.
+std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode);
+} // namespace clothtrack::app
