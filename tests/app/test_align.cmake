@@ -147,6 +147,8 @@ expect_run(1 "--solver-tolerance and --intermediate-tolerance must be in (0, 1)"
 expect_run(1 "--refactor-steps must be 0 or more" align ${WORK}/synth/frames -o ${WORK}/x --refactor-steps -1)
 expect_run(1 "--nearest-reuse must be 0 or more" align ${WORK}/synth/frames -o ${WORK}/x --nearest-reuse -0.001)
 expect_run(1 "--seed-consensus must be between 0 and 1" align ${WORK}/synth/frames -o ${WORK}/x --seed-consensus 1.5)
+expect_run(1 "--factor-backend must be block or cholmod" align ${WORK}/synth/frames -o ${WORK}/x --factor-backend dense)
+expect_run(1 "--persistence must be at least 1" align ${WORK}/synth/frames -o ${WORK}/x --persistence 0)
 # Aligned frames are written in the background: a failed write still ends the run with its error.
 # (A run with the same options first, so that the second resumes in the folder as it is.)
 set(blocked_run fit ${WORK}/synth/frames --frames 0:3 --work ${WORK}/staged/work -o ${WORK}/blocked

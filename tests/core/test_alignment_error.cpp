@@ -1,6 +1,6 @@
-#include <clothtrack/AlignmentError.h>
-#include <clothtrack/Error.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/eval/AlignmentError.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Block Cholesky preconditioner: solves against a dense reference, refuses bad matrices.
-#include <clothtrack/BlockCholesky.h>
-#include <clothtrack/Error.h>
-#include <clothtrack/MeshTopology.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/MeshTopology.h>
+#include <clothtrack/mesh/Primitives.h>
+#include <clothtrack/solver/BlockCholesky.h>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include <clothtrack/BlockSolveKernel.h>
+#include <clothtrack/solver/BlockSolveKernel.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

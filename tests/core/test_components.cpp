@@ -1,5 +1,5 @@
-#include <clothtrack/Components.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/mesh/Components.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

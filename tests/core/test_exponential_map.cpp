@@ -1,7 +1,7 @@
 // Geodesic polar coordinates against analytic truth on a plane and a sphere.
-#include <clothtrack/Error.h>
-#include <clothtrack/ExponentialMap.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/ExponentialMap.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include <clothtrack/Extremities.h>
-#include <clothtrack/InsideTest.h>
-#include <clothtrack/Parallel.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Parallel.h>
+#include <clothtrack/body/Extremities.h>
+#include <clothtrack/mesh/InsideTest.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "TestUtil.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/FrameList.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/io/FrameList.h>
 
 #include <gtest/gtest.h>
 

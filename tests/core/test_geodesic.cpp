@@ -1,8 +1,8 @@
 // Geodesic distances against analytic truth. The measured errors are printed (and recorded
 // as test properties) so that the accuracy of each method is visible in the test log.
-#include <clothtrack/Error.h>
-#include <clothtrack/Geodesic.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/Geodesic.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

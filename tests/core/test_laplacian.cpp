@@ -1,5 +1,5 @@
-#include <clothtrack/Laplacian.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/mesh/Laplacian.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include <clothtrack/Error.h>
-#include <clothtrack/MarkerError.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/eval/MarkerError.h>
 
 #include <gtest/gtest.h>
 

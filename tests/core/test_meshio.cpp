@@ -1,8 +1,8 @@
 #include "TestUtil.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/MeshIO.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/io/MeshIO.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include <clothtrack/Error.h>
-#include <clothtrack/MotionPrediction.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/fit/MotionPrediction.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Geodesic-patch correspondence on surfaces with a known answer.
-#include <clothtrack/Error.h>
-#include <clothtrack/PatchCorrespondence.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include <clothtrack/PointIndex.h>
+#include <clothtrack/mesh/PointIndex.h>
 
 #include <gtest/gtest.h>
 

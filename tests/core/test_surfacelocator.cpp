@@ -1,5 +1,5 @@
-#include <clothtrack/Primitives.h>
-#include <clothtrack/SurfaceLocator.h>
+#include <clothtrack/mesh/Primitives.h>
+#include <clothtrack/mesh/SurfaceLocator.h>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include <clothtrack/Error.h>
-#include <clothtrack/Primitives.h>
-#include <clothtrack/TemplateSelection.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/Primitives.h>
+#include <clothtrack/selection/TemplateSelection.h>
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include <clothtrack/MeshTopology.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/mesh/MeshTopology.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

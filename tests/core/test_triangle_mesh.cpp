@@ -1,5 +1,5 @@
-#include <clothtrack/Primitives.h>
-#include <clothtrack/TriangleMesh.h>
+#include <clothtrack/mesh/Primitives.h>
+#include <clothtrack/mesh/TriangleMesh.h>
 
 #include <gtest/gtest.h>
 

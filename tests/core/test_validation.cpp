@@ -1,7 +1,7 @@
-#include <clothtrack/Error.h>
-#include <clothtrack/MeshTopology.h>
-#include <clothtrack/MeshValidation.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/MeshTopology.h>
+#include <clothtrack/mesh/MeshValidation.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 

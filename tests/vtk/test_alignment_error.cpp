@@ -4,7 +4,7 @@
 #include "ctAlignmentError.h"
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Primitives.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>

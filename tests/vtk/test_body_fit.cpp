@@ -8,7 +8,7 @@
 #include "ctMeshConversion.h"
 #include "ctSyntheticSequence.h"
 
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 #include <clothtrack/body/BodyFit.h>
 #include <clothtrack/body/MakeHumanImport.h>
 

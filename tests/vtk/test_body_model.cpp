@@ -4,9 +4,9 @@
 #include "ctBuiltinBodyModel.h"
 #include "ctMeshConversion.h"
 
-#include <clothtrack/Components.h>
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 #include <clothtrack/body/BodyModel.h>
+#include <clothtrack/mesh/Components.h>
 
 #include <vtkDataArray.h>
 #include <vtkNew.h>

@@ -5,10 +5,10 @@
 #include "ctNamedArrays.h"
 #include "ctTemplateSelection.h"
 
-#include <clothtrack/Components.h>
-#include <clothtrack/Error.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/base/Error.h>
 #include <clothtrack/body/Motion.h>
+#include <clothtrack/mesh/Components.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <vtkFieldData.h>
 #include <vtkMultiBlockDataSet.h>

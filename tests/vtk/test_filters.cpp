@@ -2,7 +2,7 @@
 #include "ctMeshConversion.h"
 #include "ctSurfaceTopology.h"
 
-#include <clothtrack/Primitives.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>

@@ -6,7 +6,7 @@
 #include "ctMeshConversion.h"
 #include "ctSyntheticSequence.h"
 
-#include <clothtrack/LandmarkTransfer.h>
+#include <clothtrack/body/LandmarkTransfer.h>
 #include <clothtrack/body/OrientedLandmarks.h>
 
 #include <vtkDataArray.h>

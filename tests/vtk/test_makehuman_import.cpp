@@ -1,9 +1,9 @@
 // The MakeHuman importer, on the CC0 assets in ../shared/data/makehuman (skipped without them).
 #include "ctBodyModelIO.h"
 
-#include <clothtrack/Components.h>
-#include <clothtrack/Error.h>
+#include <clothtrack/base/Error.h>
 #include <clothtrack/body/MakeHumanImport.h>
+#include <clothtrack/mesh/Components.h>
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 #include "ctPatchCorrespondence.h"
 #include "ctSyntheticSequence.h"
 
-#include <clothtrack/PatchCorrespondence.h>
-#include <clothtrack/Primitives.h>
 #include <clothtrack/body/OrientedLandmarks.h>
+#include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>

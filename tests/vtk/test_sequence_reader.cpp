@@ -4,8 +4,8 @@
 #include "ctMeshConversion.h"
 #include "ctMeshSequenceReader.h"
 
-#include <clothtrack/MeshIO.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/io/MeshIO.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <vtkCallbackCommand.h>
 #include <vtkDataArray.h>

@@ -4,8 +4,8 @@
 #include "ctMeshSequenceReader.h"
 #include "ctMeshSequenceWriter.h"
 
-#include <clothtrack/MeshIO.h>
-#include <clothtrack/Primitives.h>
+#include <clothtrack/io/MeshIO.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>

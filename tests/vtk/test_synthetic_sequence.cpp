@@ -3,8 +3,8 @@
 #include "ctCaptureSimulation.h"
 #include "ctSyntheticSequence.h"
 
-#include <clothtrack/Error.h>
-#include <clothtrack/MeshTopology.h>
+#include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/MeshTopology.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include "ctMeshConversion.h"
 #include "ctTemplateFit.h"
 
-#include <clothtrack/Primitives.h>
+#include <clothtrack/mesh/Primitives.h>
 
 #include <vtkCharArray.h>
 #include <vtkDataArray.h>
