@@ -55,12 +55,10 @@ struct TemplateFitOptions
   /// Exact solver: a stage ends early once no vertex moved more than this in a round (metres).
   double convergence = 5e-4;
   /// Exact solver: relative residual at which the preconditioned conjugate gradients stop in a
-  /// stage's last round (1e-4 fits as accurately as 1e-6 in half the time on samba; 1e-2 loses
-  /// accuracy).
+  /// stage's last round (the default's measurements: docs/template-fit.md).
   double solverTolerance = 1e-4;
   /// Exact solver: the same for the rounds before a stage's last, whose solution only places
-  /// the next round's nearest points. 1e-3 there takes a third less time on samba for 0.13 cm
-  /// more mean error (BENCHMARKS.md), so the default is the last round's.
+  /// the next round's nearest points (docs/template-fit.md weighs time against accuracy).
   double intermediateTolerance = 1e-4;
   /// Exact solver: a stage's factorisation, kept from frame to frame as the preconditioner, is
   /// renewed at the next frame once its conjugate gradients needed more than this many steps
@@ -81,7 +79,7 @@ struct TemplateFitOptions
   /// A vertex that moved less than this (metres) since its last closest-point search on the
   /// frame keeps that search's triangle and is projected onto it: the point found is then at
   /// most twice this much farther than the closest one. 0 searches for every vertex in every
-  /// round. The default saves a third of the searches on samba (BENCHMARKS.md).
+  /// round (the searches saved: docs/template-fit.md).
   double nearestReuse = 2e-4;
   /// Ablations: without Ec (the paper's Figure 6) or without Ed.
   bool useCorrespondence = true;

@@ -13,7 +13,7 @@ namespace clothtrack
 {
 enum class FactorBackend : int
 {
-  Block = 0,  ///< BlockCholesky (default: faster on the template fit, BENCHMARKS.md)
+  Block = 0,  ///< BlockCholesky (the default; docs/template-fit.md compares the two)
   Cholmod = 1 ///< CHOLMOD supernodal LL^T
 };
 
