@@ -115,12 +115,12 @@ struct Chains
     }
   }
 
-  /// Reports progress until `running` chains have ended; a cancel stops them.
-  void report(const int& running, int numFrames)
+  /// Reports progress until both chains have ended; a cancel stops them.
+  void report(int numFrames)
   {
     std::unique_lock<std::mutex> lock(mutex);
     int reported = -1;
-    while (running > 0)
+    while (runningChains > 0)
     {
       if (done != reported && !stop && hooks.progress)
       {
@@ -161,13 +161,11 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
     else
       chains.finish(templateFrame, false);
   }
-  int running = 2;
   auto chain = [&](int from, int to, int direction)
   {
     chains.run(from, to, direction);
-    --chains.runningChains;
     const std::lock_guard<std::mutex> lock(chains.mutex);
-    --running;
+    --chains.runningChains;
     chains.changed.notify_all();
   };
   if (threadCount() > 1 && templateFrame > 0 && templateFrame + 1 < numFrames)
@@ -175,13 +173,12 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
     chains.runningChains = 2;
     std::thread backward(chain, templateFrame - 1, -1, -1);
     std::thread forward(chain, templateFrame + 1, numFrames, +1);
-    chains.report(running, numFrames);
+    chains.report(numFrames);
     backward.join();
     forward.join();
   }
   else
   {
-    running = 0;
     chains.reportInline = true;
     chains.run(templateFrame - 1, -1, -1);
     chains.run(templateFrame + 1, numFrames, +1);
