@@ -65,18 +65,19 @@ int evaluate(Sequence& s)
   PatchCorrespondenceOptions options;
   if (const char* eps = std::getenv("CLOTHTRACK_EPSILON")) options.epsilon = std::atof(eps);
   if (const char* offset = std::getenv("CLOTHTRACK_MAX_SEED_OFFSET"))
-    options.maxSeedOffset = std::atof(offset);
+    options.maximumSeedOffset = std::atof(offset);
   if (const char* consensus = std::getenv("CLOTHTRACK_MIN_CONSENSUS"))
-    options.minConsensus = std::atof(consensus);
+    options.minimumSeedConsensus = std::atof(consensus);
   if (const char* v = std::getenv("CLOTHTRACK_CONSENSUS_RELATIVE"))
-    options.consensusRelative = std::atof(v);
+    options.seedConsensusRelativeTolerance = std::atof(v);
   if (const char* v = std::getenv("CLOTHTRACK_CONSENSUS_TOLERANCE"))
-    options.consensusTolerance = std::atof(v);
+    options.seedConsensusTolerance = std::atof(v);
   if (const char* v = std::getenv("CLOTHTRACK_CONSENSUS_RADIUS"))
-    options.consensusRadius = std::atof(v);
+    options.seedConsensusRadius = std::atof(v);
   const TemplatePatches patches(templ, s.landmarks[j], options);
   std::printf("eps %.3f m, tau_s %.2f m, tau_d %.2f m, seeds within %.2f m of the body\n",
-              options.epsilon, options.minRadius, options.maxRadius, options.maxSeedOffset);
+              options.epsilon, options.minimumRadius, options.maximumRadius,
+              options.maximumSeedOffset);
   std::printf("template preparation %.2f s\n", seconds(start));
   Stats geodesic, baseline, baselineSame;
   double kept = 0, tried = 0, landmarkError = 0;

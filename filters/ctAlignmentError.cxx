@@ -1,4 +1,5 @@
 #include "ctAlignmentError.h"
+#include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
 #include "ctFrameName.h"
@@ -23,6 +24,9 @@
 
 vtkStandardNewMacro(ctAlignmentError);
 
+ctOptionClampDefinition(ctAlignmentError, MaximumTruthDistance, double,
+                        Options.maximumTruthDistance, 1e-6, 100.0);
+
 ctAlignmentError::ctAlignmentError()
 {
   this->SetNumberOfInputPorts(2);
@@ -32,7 +36,7 @@ ctAlignmentError::ctAlignmentError()
 void ctAlignmentError::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "MaximumTruthDistance: " << this->MaximumTruthDistance << "\n";
+  os << indent << "MaximumTruthDistance: " << this->Options.maximumTruthDistance << "\n";
 }
 
 vtkTable* ctAlignmentError::GetFrameErrorOutput()
@@ -57,6 +61,62 @@ int ctAlignmentError::FillOutputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
+namespace
+{
+using clothtrack::namedArray;
+
+/// Output port 1: per-frame statistics; field data: the whole sequence's.
+void addFrameErrorRows(vtkTable* frameTable, const clothtrack::SequenceErrors& summary)
+{
+  using clothtrack::addFieldValue;
+  const int n = static_cast<int>(summary.perFrame.size());
+  auto frameColumn = namedArray<vtkIntArray>("Frame", n);
+  auto verticesColumn = namedArray<vtkIntArray>("Vertices", n);
+  const char* statisticNames[] = {"Mean", "Median", "P90", "Max", "Within5cm", "Within10cm"};
+  std::vector<vtkSmartPointer<vtkDoubleArray>> statistics;
+  for (const char* name : statisticNames) statistics.push_back(namedArray<vtkDoubleArray>(name, n));
+  for (int k = 0; k < n; ++k)
+  {
+    const clothtrack::ErrorStatistics& s = summary.perFrame[k];
+    frameColumn->SetValue(k, k);
+    verticesColumn->SetValue(k, s.count);
+    const double values[] = {s.mean, s.median, s.p90, s.max, s.within5cm, s.within10cm};
+    for (size_t c = 0; c < statistics.size(); ++c) statistics[c]->SetValue(k, values[c]);
+  }
+  frameTable->AddColumn(frameColumn);
+  for (auto& column : statistics) frameTable->AddColumn(column);
+  frameTable->AddColumn(verticesColumn);
+  // The whole sequence (every frame but the template frame), as the app's metrics.json has it.
+  const clothtrack::ErrorStatistics& all = summary.pooled;
+  vtkFieldData* pooled = frameTable->GetFieldData();
+  const std::pair<const char*, double> sequenceValues[] = {
+      {"SequenceMean", all.mean},
+      {"SequenceMedian", all.median},
+      {"SequenceP90", all.p90},
+      {"SequenceMax", all.max},
+      {"SequenceWithin5cm", all.within5cm},
+      {"SequenceWithin10cm", all.within10cm},
+      {"DriftPerFrame", summary.driftPerFrame}};
+  for (const auto& [name, value] : sequenceValues) addFieldValue(pooled, name, value);
+  addFieldValue(pooled, "WorstFrame", summary.worstFrame);
+}
+
+/// Output port 2: the cumulative error curve.
+void addCumulativeRows(vtkTable* curveTable, const clothtrack::SequenceErrors& summary)
+{
+  const size_t rows = summary.thresholds.size();
+  auto thresholdColumn = namedArray<vtkDoubleArray>("Threshold", rows);
+  auto fractionColumn = namedArray<vtkDoubleArray>("Fraction", rows);
+  for (size_t t = 0; t < rows; ++t)
+  {
+    thresholdColumn->SetValue(t, summary.thresholds[t]);
+    fractionColumn->SetValue(t, summary.fractions[t]);
+  }
+  curveTable->AddColumn(thresholdColumn);
+  curveTable->AddColumn(fractionColumn);
+}
+} // namespace
+
 int ctAlignmentError::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                   vtkInformationVector* outputVector)
 {
@@ -77,23 +137,17 @@ int ctAlignmentError::RequestData(vtkInformation*, vtkInformationVector** inputV
       throw Error("alignment error: the template frame " + std::to_string(j) +
                   " is not in the sequence");
     const TriangleMesh templateMesh = frameMesh(aligned, j);
-    const TruthAnchors anchors =
-        anchorToTruth(templateMesh.V, frameMesh(truthSequence, j), this->MaximumTruthDistance);
+    const TruthAnchors anchors = anchorToTruth(templateMesh.V, frameMesh(truthSequence, j),
+                                               this->Options.maximumTruthDistance);
     if (anchors.count() == 0)
       throw Error("alignment error: no template vertex lies within " +
-                  std::to_string(this->MaximumTruthDistance) +
+                  std::to_string(this->Options.maximumTruthDistance) +
                   " m of the ground truth at the template frame (units or frames mismatched?)");
 
     auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
     vtkTable* frameTable = vtkTable::GetData(outputVector, 1);
     vtkTable* curveTable = vtkTable::GetData(outputVector, 2);
     output->SetNumberOfBlocks(n);
-    auto frameColumn = namedArray<vtkIntArray>("Frame", n);
-    auto verticesColumn = namedArray<vtkIntArray>("Vertices", n);
-    const char* statisticNames[] = {"Mean", "Median", "P90", "Max", "Within5cm", "Within10cm"};
-    std::vector<vtkSmartPointer<vtkDoubleArray>> statistics;
-    for (const char* name : statisticNames)
-      statistics.push_back(namedArray<vtkDoubleArray>(name, n));
     std::vector<Eigen::VectorXd> errors(n);
     for (int k = 0; k < n; ++k)
     {
@@ -114,41 +168,8 @@ int ctAlignmentError::RequestData(vtkInformation*, vtkInformationVector** inputV
       this->UpdateProgress(static_cast<double>(k + 1) / n);
     }
     const SequenceErrors summary = sequenceErrors(errors, j);
-    for (int k = 0; k < n; ++k)
-    {
-      const ErrorStatistics& s = summary.perFrame[k];
-      frameColumn->SetValue(k, k);
-      verticesColumn->SetValue(k, s.count);
-      const double values[] = {s.mean, s.median, s.p90, s.max, s.within5cm, s.within10cm};
-      for (size_t c = 0; c < statistics.size(); ++c) statistics[c]->SetValue(k, values[c]);
-    }
-    frameTable->AddColumn(frameColumn);
-    for (auto& column : statistics) frameTable->AddColumn(column);
-    frameTable->AddColumn(verticesColumn);
-    // The whole sequence (every frame but the template frame), as the app's metrics.json has it.
-    const ErrorStatistics& all = summary.pooled;
-    vtkFieldData* pooled = frameTable->GetFieldData();
-    const std::pair<const char*, double> sequenceValues[] = {
-        {"SequenceMean", all.mean},
-        {"SequenceMedian", all.median},
-        {"SequenceP90", all.p90},
-        {"SequenceMax", all.max},
-        {"SequenceWithin5cm", all.within5cm},
-        {"SequenceWithin10cm", all.within10cm},
-        {"DriftPerFrame", summary.driftPerFrame}};
-    for (const auto& [name, value] : sequenceValues) addFieldValue(pooled, name, value);
-    addFieldValue(pooled, "WorstFrame", summary.worstFrame);
-
-    const size_t rows = summary.thresholds.size();
-    auto thresholdColumn = namedArray<vtkDoubleArray>("Threshold", rows);
-    auto fractionColumn = namedArray<vtkDoubleArray>("Fraction", rows);
-    for (size_t t = 0; t < rows; ++t)
-    {
-      thresholdColumn->SetValue(t, summary.thresholds[t]);
-      fractionColumn->SetValue(t, summary.fractions[t]);
-    }
-    curveTable->AddColumn(thresholdColumn);
-    curveTable->AddColumn(fractionColumn);
+    addFrameErrorRows(frameTable, summary);
+    addCumulativeRows(curveTable, summary);
   }
   catch (const Error& e)
   {

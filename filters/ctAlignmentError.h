@@ -25,6 +25,8 @@
 
 #include "ctFiltersModule.h"
 
+#include <clothtrack/eval/AlignmentError.h>
+
 #include <vtkMultiBlockDataSetAlgorithm.h>
 
 class vtkTable;
@@ -37,8 +39,8 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Template vertices further than this from the ground truth have no error (metres).
-  vtkSetClampMacro(MaximumTruthDistance, double, 1e-6, 100.0);
-  vtkGetMacro(MaximumTruthDistance, double);
+  virtual void SetMaximumTruthDistance(double value);
+  virtual double GetMaximumTruthDistance();
 
   /// The ground truth (input port 1).
   void SetGroundTruthConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
@@ -56,8 +58,7 @@ protected:
 private:
   ctAlignmentError(const ctAlignmentError&) = delete;
   void operator=(const ctAlignmentError&) = delete;
-
-  double MaximumTruthDistance = 0.03;
+  clothtrack::TruthAnchorOptions Options;
 };
 
 #endif

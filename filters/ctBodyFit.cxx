@@ -1,4 +1,5 @@
 #include "ctBodyFit.h"
+#include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
 #include "ctBodyModelIO.h"
@@ -9,6 +10,7 @@
 #include "ctNamedArrays.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
 #include <clothtrack/body/BodyFit.h>
 #include <clothtrack/body/LandmarkTransfer.h>
 #include <clothtrack/body/OrientedLandmarks.h>
@@ -29,6 +31,14 @@
 #include <memory>
 
 vtkStandardNewMacro(ctBodyFit);
+
+ctOptionClampDefinition(ctBodyFit, TemporalWeight, double, Options.fit.temporalWeight, 0.0, 1000.0);
+ctOptionClampDefinition(ctBodyFit, ShapeFrames, int, Options.fit.shapeFrames, 1, 1000);
+ctOptionClampDefinition(ctBodyFit, Samples, int, Options.fit.samples, 50, 100000);
+ctOptionClampDefinition(ctBodyFit, OutsideTolerance, double, Options.transfer.outsideTolerance, 0.0,
+                        10.0);
+ctOptionClampDefinition(ctBodyFit, InsideTolerance, double, Options.transfer.insideTolerance, 0.0,
+                        10.0);
 
 ctBodyFit::ctBodyFit()
 {
@@ -64,6 +74,111 @@ int ctBodyFit::FillOutputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
+namespace
+{
+/// The frames as surfaces; a frame that cannot be read is left out (nullptr) and its error kept.
+std::vector<const clothtrack::TriangleMesh*>
+readFrames(vtkMultiBlockDataSet* sequence, std::vector<clothtrack::TriangleMesh>& meshes,
+           std::vector<std::string>& errors)
+{
+  const int n = static_cast<int>(sequence->GetNumberOfBlocks());
+  meshes.assign(n, {});
+  std::vector<const clothtrack::TriangleMesh*> frames(n, nullptr);
+  for (int k = 0; k < n; ++k)
+  {
+    vtkDataObject* block = sequence->GetBlock(static_cast<unsigned>(k));
+    const std::string name = clothtrack::frameName(block, k);
+    try
+    {
+      auto* poly = vtkPolyData::SafeDownCast(block);
+      if (!poly) throw clothtrack::Error(name + " is not a vtkPolyData");
+      meshes[k] = clothtrack::toTriangleMesh(poly, name);
+      clothtrack::validateMesh(meshes[k], name);
+      frames[k] = &meshes[k];
+    }
+    catch (const clothtrack::Error& e)
+    {
+      errors.push_back(e.what());
+    }
+  }
+  return frames;
+}
+
+/// Output port 0 block: the fitted body of one frame with its pose and quality.
+vtkSmartPointer<vtkPolyData> fittedBodyPolyData(const clothtrack::BodyModel& model,
+                                                const clothtrack::BodyFitResult& fit, int k,
+                                                double fromRest)
+{
+  using namespace clothtrack;
+  const BodyFrameFit& f = fit.frames[k];
+  Points joints;
+  vtkSmartPointer<vtkPolyData> bodyData = toPolyData(model.posed(fit.beta, f.pose, &joints));
+  addBodyModelArrays(model, joints, bodyData);
+  vtkFieldData* fd = bodyData->GetFieldData();
+  clothtrack::addFieldValue(fd, clothtrack::arrays::FrameIndex, k);
+  clothtrack::addFieldValue(fd, "FitStatus", static_cast<int>(f.status));
+  vtkNew<vtkDoubleArray> pose;
+  pose->SetName("Pose");
+  for (int j = 0; j < NumJoints; ++j)
+    for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.rotations(j, c));
+  for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.translation[c]);
+  fd->AddArray(pose);
+  clothtrack::addFieldValue(fd, clothtrack::arrays::RestPoseDistance, fromRest);
+  clothtrack::addFieldValue(fd, "MedianDistance", f.medianDistance);
+  clothtrack::addFieldValue(fd, "InsideFraction", f.insideFraction);
+  return bodyData;
+}
+
+/// Output port 2: one row per frame.
+struct StatusTable
+{
+  vtkNew<vtkIntArray> frame, status, detected, matched;
+  vtkNew<vtkDoubleArray> distance, inside, found, restPose;
+
+  void add(int k, const clothtrack::BodyFrameFit& f, double foundFraction, double fromRest)
+  {
+    frame->InsertNextValue(k);
+    status->InsertNextValue(static_cast<int>(f.status));
+    detected->InsertNextValue(f.extremitiesDetected);
+    matched->InsertNextValue(f.extremitiesMatched);
+    distance->InsertNextValue(f.medianDistance);
+    inside->InsertNextValue(f.insideFraction);
+    found->InsertNextValue(foundFraction);
+    restPose->InsertNextValue(fromRest);
+  }
+  void addTo(vtkTable* table)
+  {
+    frame->SetName("Frame");
+    status->SetName("Status");
+    detected->SetName("ExtremitiesDetected");
+    matched->SetName("ExtremitiesMatched");
+    distance->SetName("MedianDistance");
+    inside->SetName("InsideFraction");
+    found->SetName("LandmarksFound");
+    restPose->SetName(clothtrack::arrays::RestPoseDistance);
+    for (vtkAbstractArray* column :
+         {static_cast<vtkAbstractArray*>(frame), static_cast<vtkAbstractArray*>(status),
+          static_cast<vtkAbstractArray*>(distance), static_cast<vtkAbstractArray*>(inside),
+          static_cast<vtkAbstractArray*>(detected), static_cast<vtkAbstractArray*>(matched),
+          static_cast<vtkAbstractArray*>(found), static_cast<vtkAbstractArray*>(restPose)})
+      table->AddColumn(column);
+  }
+};
+} // namespace
+
+clothtrack::BodyStageOptions ctBodyFit::StageOptions() const
+{
+  // The weight properties scale the whole schedule of the core's stages.
+  clothtrack::BodyStageOptions options = this->Options;
+  for (clothtrack::BodyFitStage& stage : options.fit.stages)
+  {
+    stage.landmarkWeight *= this->LandmarkWeight;
+    stage.nearestWeight *= this->NearestWeight;
+    stage.insideWeight *= this->InsideWeight;
+  }
+  return options;
+}
+
 int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                            vtkInformationVector* outputVector)
 {
@@ -75,48 +190,20 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
     vtkErrorMacro(<< "body fit: the sequence has no frame");
     return 0;
   }
+  ThreadBudget threads(this->NumberOfThreads);
   try
   {
     std::unique_ptr<BodyModel> ownModel;
     if (vtkPolyData* modelData = vtkPolyData::GetData(inputVector[1], 0))
       ownModel = std::make_unique<BodyModel>(bodyModelFromPolyData(modelData, "body model input"));
     const BodyModel& model = ownModel ? *ownModel : builtinBodyModel();
-
     // Frames that cannot be read as surfaces are flagged, not fatal.
-    std::vector<TriangleMesh> meshes(n);
-    std::vector<const TriangleMesh*> frames(n, nullptr);
-    for (int k = 0; k < n; ++k)
-    {
-      vtkDataObject* block = sequence->GetBlock(static_cast<unsigned>(k));
-      const std::string name = frameName(block, k);
-      try
-      {
-        auto* poly = vtkPolyData::SafeDownCast(block);
-        if (!poly) throw Error(name + " is not a vtkPolyData");
-        meshes[k] = toTriangleMesh(poly, name);
-        validateMesh(meshes[k], name);
-        frames[k] = &meshes[k];
-      }
-      catch (const Error& e)
-      {
-        vtkWarningMacro(<< "body fit: " << e.what() << "; the frame is flagged failed");
-      }
-    }
-
-    BodyFitOptions options;
-    for (BodyFitStage& stage : options.stages)
-    {
-      stage.landmarkWeight *= this->LandmarkWeight;
-      stage.nearestWeight *= this->NearestWeight;
-      stage.insideWeight *= this->InsideWeight;
-    }
-    options.temporalWeight = this->TemporalWeight;
-    options.shapeFrames = this->ShapeFrames;
-    options.samples = this->Samples;
-    BodyStageOptions stageOptions{options, {}};
-    stageOptions.transfer.outsideTolerance = this->OutsideTolerance;
-    stageOptions.transfer.insideTolerance = this->InsideTolerance;
-    const BodyStageResult stage = fitBodyAndLandmarks(model, frames, stageOptions,
+    std::vector<TriangleMesh> meshes;
+    std::vector<std::string> unreadable;
+    const std::vector<const TriangleMesh*> frames = readFrames(sequence, meshes, unreadable);
+    for (const std::string& message : unreadable)
+      vtkWarningMacro(<< "body fit: " << message << "; the frame is flagged failed");
+    const BodyStageResult stage = fitBodyAndLandmarks(model, frames, this->StageOptions(),
                                                       [this](double progress)
                                                       {
                                                         this->UpdateProgress(0.95 * progress);
@@ -126,57 +213,29 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
 
     auto* bodies = vtkMultiBlockDataSet::GetData(outputVector, 0);
     auto* landmarks = vtkMultiBlockDataSet::GetData(outputVector, 1);
-    vtkTable* table = vtkTable::GetData(outputVector, 2);
     bodies->SetNumberOfBlocks(n);
     landmarks->SetNumberOfBlocks(n);
     vtkNew<vtkDoubleArray> beta;
     beta->SetName("ShapeCoefficients");
     for (Eigen::Index k = 0; k < fit.beta.size(); ++k) beta->InsertNextValue(fit.beta[k]);
     bodies->GetFieldData()->AddArray(beta);
-
-    vtkNew<vtkIntArray> frameColumn, status, detected, matched;
-    frameColumn->SetName("Frame");
-    status->SetName("Status");
-    detected->SetName("ExtremitiesDetected");
-    matched->SetName("ExtremitiesMatched");
-    vtkNew<vtkDoubleArray> distance, inside, found, restPose;
-    restPose->SetName(clothtrack::arrays::RestPoseDistance);
-    distance->SetName("MedianDistance");
-    inside->SetName("InsideFraction");
-    found->SetName("LandmarksFound");
+    StatusTable table;
     for (int k = 0; k < n; ++k)
     {
       const BodyFrameFit& f = fit.frames[k];
-      Points joints;
-      const TriangleMesh body = model.posed(fit.beta, f.pose, &joints);
-      vtkSmartPointer<vtkPolyData> bodyData = toPolyData(body);
-      addBodyModelArrays(model, joints, bodyData);
-      vtkFieldData* fd = bodyData->GetFieldData();
-      addFieldValue(fd, clothtrack::arrays::FrameIndex, k);
-      addFieldValue(fd, "FitStatus", static_cast<int>(f.status));
-      vtkNew<vtkDoubleArray> pose;
-      pose->SetName("Pose");
-      for (int j = 0; j < NumJoints; ++j)
-        for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.rotations(j, c));
-      for (int c = 0; c < 3; ++c) pose->InsertNextValue(f.pose.translation[c]);
-      fd->AddArray(pose);
       const double fromRest = fittedRestPoseDistance(f.status, f.pose);
-      addFieldValue(fd, clothtrack::arrays::RestPoseDistance, fromRest);
-      addFieldValue(fd, "MedianDistance", f.medianDistance);
-      addFieldValue(fd, "InsideFraction", f.insideFraction);
-      bodies->SetBlock(k, bodyData);
+      bodies->SetBlock(k, fittedBodyPolyData(model, fit, k, fromRest));
       bodies->GetMetaData(static_cast<unsigned>(k))
           ->Set(vtkCompositeDataSet::NAME(), ("body_" + std::to_string(k)).c_str());
-
       // Landmarks (none on a frame whose fit failed).
       vtkSmartPointer<vtkPolyData> landmarkData =
           transferredLandmarksToPolyData(stage.bodyLandmarks[k], stage.transferred[k]);
       addLandmarkIdentity(model, landmarkData);
-      addFieldValue(landmarkData->GetFieldData(), clothtrack::arrays::RestPoseDistance, fromRest);
+      clothtrack::addFieldValue(landmarkData->GetFieldData(), clothtrack::arrays::RestPoseDistance,
+                                fromRest);
       landmarks->SetBlock(k, landmarkData);
       const double foundFraction =
           landmarkData->GetFieldData()->GetArray(clothtrack::arrays::LandmarksFound)->GetTuple1(0);
-
       if (f.status != BodyFitStatus::Ok)
         vtkWarningMacro(<< "body fit: " << frameName(sequence->GetBlock(k), k) << ": "
                         << bodyFitStatusName(f.status) << (f.message.empty() ? "" : ": ")
@@ -184,22 +243,10 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
       else if (foundFraction == 0.0)
         vtkWarningMacro(<< "body fit: " << frameName(sequence->GetBlock(k), k)
                         << ": no landmark could be placed");
-      frameColumn->InsertNextValue(k);
-      status->InsertNextValue(static_cast<int>(f.status));
-      detected->InsertNextValue(f.extremitiesDetected);
-      matched->InsertNextValue(f.extremitiesMatched);
-      distance->InsertNextValue(f.medianDistance);
-      inside->InsertNextValue(f.insideFraction);
-      found->InsertNextValue(foundFraction);
-      restPose->InsertNextValue(fromRest);
+      table.add(k, f, foundFraction, fromRest);
       this->UpdateProgress(0.95 + 0.05 * (k + 1) / n);
     }
-    for (vtkAbstractArray* column :
-         {static_cast<vtkAbstractArray*>(frameColumn), static_cast<vtkAbstractArray*>(status),
-          static_cast<vtkAbstractArray*>(distance), static_cast<vtkAbstractArray*>(inside),
-          static_cast<vtkAbstractArray*>(detected), static_cast<vtkAbstractArray*>(matched),
-          static_cast<vtkAbstractArray*>(found), static_cast<vtkAbstractArray*>(restPose)})
-      table->AddColumn(column);
+    table.addTo(vtkTable::GetData(outputVector, 2));
   }
   catch (const Error& e)
   {
@@ -215,9 +262,9 @@ void ctBodyFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LandmarkWeight: " << this->LandmarkWeight << "\n";
   os << indent << "NearestWeight: " << this->NearestWeight << "\n";
   os << indent << "InsideWeight: " << this->InsideWeight << "\n";
-  os << indent << "TemporalWeight: " << this->TemporalWeight << "\n";
-  os << indent << "ShapeFrames: " << this->ShapeFrames << "\n";
-  os << indent << "Samples: " << this->Samples << "\n";
-  os << indent << "OutsideTolerance: " << this->OutsideTolerance << "\n";
-  os << indent << "InsideTolerance: " << this->InsideTolerance << "\n";
+  os << indent << "TemporalWeight: " << this->Options.fit.temporalWeight << "\n";
+  os << indent << "ShapeFrames: " << this->Options.fit.shapeFrames << "\n";
+  os << indent << "Samples: " << this->Options.fit.samples << "\n";
+  os << indent << "OutsideTolerance: " << this->Options.transfer.outsideTolerance << "\n";
+  os << indent << "InsideTolerance: " << this->Options.transfer.insideTolerance << "\n";
 }

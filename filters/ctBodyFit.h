@@ -32,6 +32,8 @@
 
 #include "ctFiltersModule.h"
 
+#include <clothtrack/pipeline/BodyStage.h>
+
 #include <vtkMultiBlockDataSetAlgorithm.h>
 
 class vtkTable;
@@ -53,20 +55,24 @@ public:
   vtkSetClampMacro(InsideWeight, double, 0.0, 1000.0);
   vtkGetMacro(InsideWeight, double);
   /// Weight of joint rotation changes between consecutive frames.
-  vtkSetClampMacro(TemporalWeight, double, 0.0, 1000.0);
-  vtkGetMacro(TemporalWeight, double);
+  virtual void SetTemporalWeight(double value);
+  virtual double GetTemporalWeight();
   /// Key frames used to estimate the shape.
-  vtkSetClampMacro(ShapeFrames, int, 1, 1000);
-  vtkGetMacro(ShapeFrames, int);
+  virtual void SetShapeFrames(int value);
+  virtual int GetShapeFrames();
   /// Body vertices used by the dense terms.
-  vtkSetClampMacro(Samples, int, 50, 100000);
-  vtkGetMacro(Samples, int);
+  virtual void SetSamples(int value);
+  virtual int GetSamples();
   /// Landmark transfer: tau_o (metres).
-  vtkSetClampMacro(OutsideTolerance, double, 0.0, 10.0);
-  vtkGetMacro(OutsideTolerance, double);
+  virtual void SetOutsideTolerance(double value);
+  virtual double GetOutsideTolerance();
   /// Landmark transfer: tau_i (metres).
-  vtkSetClampMacro(InsideTolerance, double, 0.0, 10.0);
-  vtkGetMacro(InsideTolerance, double);
+  virtual void SetInsideTolerance(double value);
+  virtual double GetInsideTolerance();
+
+  /// Threads of this filter's loops (0: the process's count, every core by default).
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
 
   /// The body model (output of ctBodyModelReader) on input port 1.
   void SetBodyModelConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
@@ -85,15 +91,15 @@ protected:
   double LandmarkWeight = 1.0;
   double NearestWeight = 1.0;
   double InsideWeight = 1.0;
-  double TemporalWeight = 0.01;
-  int ShapeFrames = 8;
-  int Samples = 600;
-  double OutsideTolerance = 0.05;
-  double InsideTolerance = 0.2;
+  int NumberOfThreads = 0;
 
 private:
+  /// The core options with the weight multipliers applied.
+  clothtrack::BodyStageOptions StageOptions() const;
+
   ctBodyFit(const ctBodyFit&) = delete;
   void operator=(const ctBodyFit&) = delete;
+  clothtrack::BodyStageOptions Options;
 };
 
 #endif

@@ -1,4 +1,5 @@
 #include "ctLandmarkTransfer.h"
+#include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
 #include "ctLandmarkPolyData.h"
@@ -21,6 +22,11 @@
 #include <vtkPolyData.h>
 
 vtkStandardNewMacro(ctLandmarkTransfer);
+
+ctOptionClampDefinition(ctLandmarkTransfer, OutsideTolerance, double, Options.outsideTolerance, 0.0,
+                        10.0);
+ctOptionClampDefinition(ctLandmarkTransfer, InsideTolerance, double, Options.insideTolerance, 0.0,
+                        10.0);
 
 ctLandmarkTransfer::ctLandmarkTransfer()
 {
@@ -59,11 +65,8 @@ int ctLandmarkTransfer::RequestData(vtkInformation*, vtkInformationVector** inpu
       points[k] = {Vec3(body->GetPoint(k)), Vec3(normals->GetTuple3(k)),
                    Vec3(directions->GetTuple3(k))};
     const SurfaceLocator locator(frame);
-    LandmarkTransferOptions options;
-    options.outsideTolerance = this->OutsideTolerance;
-    options.insideTolerance = this->InsideTolerance;
     const std::vector<TransferredLandmark> result =
-        transferLandmarks(points, frame, locator, options);
+        transferLandmarks(points, frame, locator, this->Options);
 
     output->ShallowCopy(transferredLandmarksToPolyData(points, result));
     for (const char* name : {clothtrack::arrays::LandmarkId, clothtrack::arrays::LandmarkName,
@@ -86,6 +89,6 @@ int ctLandmarkTransfer::RequestData(vtkInformation*, vtkInformationVector** inpu
 void ctLandmarkTransfer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "OutsideTolerance: " << this->OutsideTolerance << "\n";
-  os << indent << "InsideTolerance: " << this->InsideTolerance << "\n";
+  os << indent << "OutsideTolerance: " << this->Options.outsideTolerance << "\n";
+  os << indent << "InsideTolerance: " << this->Options.insideTolerance << "\n";
 }

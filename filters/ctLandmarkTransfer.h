@@ -19,6 +19,8 @@
 
 #include "ctFiltersModule.h"
 
+#include <clothtrack/body/LandmarkTransfer.h>
+
 #include <vtkPolyDataAlgorithm.h>
 
 class CTFILTERS_EXPORT ctLandmarkTransfer : public vtkPolyDataAlgorithm
@@ -28,10 +30,10 @@ public:
   vtkTypeMacro(ctLandmarkTransfer, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  vtkSetClampMacro(OutsideTolerance, double, 0.0, 10.0);
-  vtkGetMacro(OutsideTolerance, double);
-  vtkSetClampMacro(InsideTolerance, double, 0.0, 10.0);
-  vtkGetMacro(InsideTolerance, double);
+  virtual void SetOutsideTolerance(double value);
+  virtual double GetOutsideTolerance();
+  virtual void SetInsideTolerance(double value);
+  virtual double GetInsideTolerance();
 
   /// The oriented body points (input port 1).
   void SetBodyLandmarksConnection(vtkAlgorithmOutput* output)
@@ -46,12 +48,10 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
                   vtkInformationVector* outputVector) override;
 
-  double OutsideTolerance = 0.05;
-  double InsideTolerance = 0.2;
-
 private:
   ctLandmarkTransfer(const ctLandmarkTransfer&) = delete;
   void operator=(const ctLandmarkTransfer&) = delete;
+  clothtrack::LandmarkTransferOptions Options;
 };
 
 #endif

@@ -40,6 +40,9 @@
 
 #include "ctFiltersModule.h"
 
+#include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/selection/TemplateSelection.h>
+
 #include <vtkMultiBlockDataSetAlgorithm.h>
 
 class vtkTable;
@@ -52,46 +55,49 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Near-isometry tolerance eps (metres).
-  vtkSetClampMacro(Epsilon, double, 1e-4, 10.0);
-  vtkGetMacro(Epsilon, double);
+  virtual void SetEpsilon(double value);
+  virtual double GetEpsilon();
   /// tau_s: patches with a smaller radius are discarded (metres).
-  vtkSetClampMacro(MinimumRadius, double, 0.0, 10.0);
-  vtkGetMacro(MinimumRadius, double);
+  virtual void SetMinimumRadius(double value);
+  virtual double GetMinimumRadius();
   /// tau_d: intrinsic radius where patch growth stops (metres).
-  vtkSetClampMacro(MaximumRadius, double, 1e-3, 10.0);
-  vtkGetMacro(MaximumRadius, double);
+  virtual void SetMaximumRadius(double value);
+  virtual double GetMaximumRadius();
   /// Points checked by the near-isometry test besides the seed.
-  vtkSetClampMacro(NumberOfAnchors, int, 0, 64);
-  vtkGetMacro(NumberOfAnchors, int);
+  virtual void SetNumberOfAnchors(int value);
+  virtual int GetNumberOfAnchors();
   /// Landmarks further than this from the body (their Offset, metres) seed no patch: loose cloth
   /// slides over the body, so they are not the same cloth point in every frame.
-  vtkSetClampMacro(MaximumSeedOffset, double, 0.0, 100.0);
-  vtkGetMacro(MaximumSeedOffset, double);
+  virtual void SetMaximumSeedOffset(double value);
+  virtual double GetMaximumSeedOffset();
   /// Share of the nearby seeds a seed must agree with to grow a patch (0: no vote).
-  vtkSetClampMacro(MinimumSeedConsensus, double, 0.0, 1.0);
-  vtkGetMacro(MinimumSeedConsensus, double);
+  virtual void SetMinimumSeedConsensus(double value);
+  virtual double GetMinimumSeedConsensus();
   /// Seeds within this geodesic distance of a seed on the template vote on it (metres).
-  vtkSetClampMacro(SeedConsensusRadius, double, 0.01, 100.0);
-  vtkGetMacro(SeedConsensusRadius, double);
+  virtual void SetSeedConsensusRadius(double value);
+  virtual double GetSeedConsensusRadius();
   /// Two seeds agree when their geodesic distances on the template and on the frame differ by
   /// at most SeedConsensusTolerance (metres) + SeedConsensusRelativeTolerance * distance.
-  vtkSetClampMacro(SeedConsensusTolerance, double, 0.0, 10.0);
-  vtkGetMacro(SeedConsensusTolerance, double);
-  vtkSetClampMacro(SeedConsensusRelativeTolerance, double, 0.0, 10.0);
-  vtkGetMacro(SeedConsensusRelativeTolerance, double);
+  virtual void SetSeedConsensusTolerance(double value);
+  virtual double GetSeedConsensusTolerance();
+  virtual void SetSeedConsensusRelativeTolerance(double value);
+  virtual double GetSeedConsensusRelativeTolerance();
   /// Automatic choice: components smaller than this (m^2) are not body parts (as in
   /// ctTemplateSelection).
-  vtkSetClampMacro(MinimumShellArea, double, 0.0, 2.0);
-  vtkGetMacro(MinimumShellArea, double);
+  virtual void SetMinimumShellArea(double value);
+  virtual double GetMinimumShellArea();
   /// Automatic choice: a split counts only if it lasts this many consecutive frames.
-  vtkSetClampMacro(Persistence, int, 1, 50);
-  vtkGetMacro(Persistence, int);
+  virtual void SetPersistence(int value);
+  virtual int GetPersistence();
   /// Automatic choice, last criterion: 0 area ratio (the paper's), 1 rest pose (default).
-  vtkSetClampMacro(TemplateCriterion, int, 0, 1);
-  vtkGetMacro(TemplateCriterion, int);
+  virtual void SetTemplateCriterion(int criterion);
+  virtual int GetTemplateCriterion();
   /// Template frame index; -1 (default) chooses it automatically.
   vtkSetMacro(TemplateFrame, int);
   vtkGetMacro(TemplateFrame, int);
+  /// Threads of this filter's loops (0: the process's count, every core by default).
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
   /// The template frame used by the last update.
   vtkGetMacro(ChosenFrame, int);
 
@@ -107,23 +113,17 @@ protected:
                   vtkInformationVector* outputVector) override;
 
 private:
+  struct Inputs;
+  Inputs ReadInputs(vtkMultiBlockDataSet* sequence, vtkMultiBlockDataSet* landmarkBlocks);
+  int ChooseTemplate(const Inputs& in, vtkMultiBlockDataSet* landmarkBlocks);
+
   ctPatchCorrespondence(const ctPatchCorrespondence&) = delete;
   void operator=(const ctPatchCorrespondence&) = delete;
-
-  double Epsilon = 0.25;
-  double MinimumRadius = 0.1;
-  double MaximumRadius = 0.25;
-  int NumberOfAnchors = 6;
-  double MaximumSeedOffset = 0.03;
-  double MinimumSeedConsensus = 0.7;
-  double SeedConsensusRadius = 1.0;
-  double SeedConsensusTolerance = 0.03;
-  double SeedConsensusRelativeTolerance = 0.08;
-  double MinimumShellArea = 0.1; // TemplateSelectionOptions::minimumShellArea
-  int Persistence = 3;           // TemplateSelectionOptions::persistence
-  int TemplateCriterion = 1;
   int TemplateFrame = -1;
+  int NumberOfThreads = 0;
   int ChosenFrame = -1;
+  clothtrack::PatchCorrespondenceOptions Patches;
+  clothtrack::TemplateSelectionOptions Selection;
 };
 
 #endif

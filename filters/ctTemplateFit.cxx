@@ -1,4 +1,5 @@
 #include "ctTemplateFit.h"
+#include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
 #include "ctFrameName.h"
@@ -6,8 +7,11 @@
 #include "ctNamedArrays.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
+#include <clothtrack/eval/SequenceQuality.h>
 #include <clothtrack/fit/MotionPrediction.h>
 #include <clothtrack/fit/TemplateFit.h>
+#include <clothtrack/pipeline/FitJudge.h>
 
 #include <vtkCharArray.h>
 #include <vtkDataArray.h>
@@ -26,6 +30,22 @@
 #include <cmath>
 
 vtkStandardNewMacro(ctTemplateFit);
+
+ctOptionClampDefinition(ctTemplateFit, RoundsPerStage, int, Options.roundsPerStage, 1, 100);
+ctOptionClampDefinition(ctTemplateFit, SolverTolerance, double, Options.solverTolerance, 1e-12,
+                        0.5);
+ctOptionClampDefinition(ctTemplateFit, IntermediateTolerance, double, Options.intermediateTolerance,
+                        1e-12, 0.5);
+ctOptionClampDefinition(ctTemplateFit, RefactorSteps, double, Options.refactorSteps, 0.0, 1000.0);
+ctOptionClampDefinition(ctTemplateFit, NearestReuse, double, Options.nearestReuse, 0.0, 0.01);
+ctOptionClampDefinition(ctTemplateFit, NearestEvery, int, Options.nearestEvery, 1, 10000);
+ctOptionClampDefinition(ctTemplateFit, MaximumNearestDistance, double,
+                        Options.maximumNearestDistance, 1e-6, 100.0);
+ctOptionClampDefinition(ctTemplateFit, MaximumNormalAngle, double, Options.maximumNormalAngle, 1.0,
+                        180.0);
+ctOptionDefinition(ctTemplateFit, UseCorrespondence, bool, Options.useCorrespondence);
+ctOptionDefinition(ctTemplateFit, UseNearest, bool, Options.useNearest);
+ctOptionClampDefinition(ctTemplateFit, PredictRadius, double, Prediction.predictRadius, 0.0, 100.0);
 
 namespace
 {
@@ -99,23 +119,25 @@ ctTemplateFit::ctTemplateFit()
 void ctTemplateFit::AddStage(double correspondence, double smoothness, double nearest,
                              double temporal)
 {
-  this->Stages.push_back({correspondence, smoothness, nearest, temporal});
+  this->Options.stages.push_back({correspondence, smoothness, nearest, temporal});
   this->Modified();
 }
 
 void ctTemplateFit::RemoveAllStages()
 {
-  this->Stages.clear();
+  this->Options.stages.clear();
   this->Modified();
 }
 
 void ctTemplateFit::SetDefaultStages()
 {
-  this->Stages.clear();
-  for (const clothtrack::FitStage& s : clothtrack::TemplateFitOptions().stages)
-    this->Stages.push_back({s.correspondence, s.smoothness, s.nearest, s.temporal});
+  this->Options.stages = clothtrack::TemplateFitOptions().stages;
   this->Modified();
 }
+
+ctOptionEnumDefinition(ctTemplateFit, Solver, clothtrack::FitSolver, Options.solver, EXACT, LBFGS);
+ctOptionEnumDefinition(ctTemplateFit, FactorBackend, clothtrack::FactorBackend,
+                       Options.factorBackend, BLOCK, CHOLMOD);
 
 vtkTable* ctTemplateFit::GetSummaryOutput()
 {
@@ -135,46 +157,113 @@ int ctTemplateFit::FillOutputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
+namespace
+{
+/// The template frame the correspondences were made for (their TemplateFrame field data).
+int correspondenceTemplateFrame(vtkMultiBlockDataSet* correspondence, int frames)
+{
+  auto* first = vtkPolyData::SafeDownCast(correspondence->GetBlock(0));
+  vtkDataArray* templateField =
+      first ? first->GetFieldData()->GetArray(clothtrack::arrays::TemplateFrame) : nullptr;
+  if (!templateField)
+    throw clothtrack::Error("template fit: the correspondence blocks carry no TemplateFrame (use "
+                            "ctPatchCorrespondence)");
+  const int j = static_cast<int>(templateField->GetComponent(0, 0));
+  if (j < 0 || j >= frames)
+    throw clothtrack::Error("template fit: the template frame " + std::to_string(j) +
+                            " is not in the sequence");
+  return j;
+}
+
+/// Output port 0: the aligned template of every frame, labelled as its input frame.
+void addAlignedBlocks(vtkMultiBlockDataSet* output, vtkMultiBlockDataSet* sequence,
+                      const clothtrack::TriangleMesh& templateMesh, int j,
+                      const std::vector<clothtrack::FrameFit>& fits)
+{
+  const int n = static_cast<int>(fits.size());
+  auto* templateData = vtkPolyData::SafeDownCast(sequence->GetBlock(j));
+  output->SetNumberOfBlocks(n);
+  for (int k = 0; k < n; ++k)
+  {
+    vtkSmartPointer<vtkPolyData> block = alignedPolyData(templateData, templateMesh, fits[k]);
+    clothtrack::addFieldValue(block->GetFieldData(), clothtrack::arrays::FrameIndex, k);
+    clothtrack::addFieldValue(block->GetFieldData(), clothtrack::arrays::TemplateFrame, j);
+    // The frame's own time and name, so that players and writers label it as its input.
+    if (auto* input = vtkPolyData::SafeDownCast(sequence->GetBlock(static_cast<unsigned>(k))))
+      for (const char* name : {clothtrack::arrays::TimeValue, clothtrack::arrays::FrameNumber,
+                               clothtrack::arrays::SourceFile})
+        if (vtkAbstractArray* array = input->GetFieldData()->GetAbstractArray(name))
+          block->GetFieldData()->AddArray(array);
+    output->SetBlock(k, block);
+    output->GetMetaData(static_cast<unsigned>(k))
+        ->Set(vtkCompositeDataSet::NAME(), ("aligned_" + std::to_string(k)).c_str());
+  }
+}
+
+/// Output port 1: one row per frame, with its confidence (clothtrack/eval/FrameConfidence.h).
+void addSummaryRows(vtkTable* table, const std::vector<clothtrack::FrameFit>& fits,
+                    const std::vector<clothtrack::FrameConfidence>& confidence)
+{
+  const int n = static_cast<int>(fits.size());
+  auto frameColumn = namedArray<vtkIntArray>("Frame", n);
+  auto distanceColumn = namedArray<vtkDoubleArray>("MeanSurfaceDistance", n);
+  auto usedColumn = namedArray<vtkIntArray>("CorrespondencesUsed", n);
+  auto nearestColumn = namedArray<vtkIntArray>("NearestValid", n);
+  auto roundsColumn = namedArray<vtkIntArray>("Rounds", n);
+  auto iterationsColumn = namedArray<vtkIntArray>("Iterations", n);
+  auto energyColumn = namedArray<vtkDoubleArray>("Energy", n);
+  auto secondsColumn = namedArray<vtkDoubleArray>("Seconds", n);
+  auto coverageColumn = namedArray<vtkDoubleArray>("CoverageDistance", n);
+  auto stretchColumn = namedArray<vtkDoubleArray>("Stretch", n);
+  auto foldedColumn = namedArray<vtkDoubleArray>("Folded", n);
+  auto confidenceColumn = namedArray<vtkDoubleArray>("Confidence", n);
+  auto attemptsColumn = namedArray<vtkIntArray>("Attempts", n);
+  for (int k = 0; k < n; ++k)
+  {
+    const clothtrack::FrameFit& fit = fits[k];
+    coverageColumn->SetValue(k, confidence[k].coverageDistance);
+    stretchColumn->SetValue(k, confidence[k].stretch);
+    foldedColumn->SetValue(k, confidence[k].folded);
+    confidenceColumn->SetValue(k, confidence[k].confidence);
+    attemptsColumn->SetValue(k, fit.attempts);
+    frameColumn->SetValue(k, k);
+    distanceColumn->SetValue(k, fit.surfaceDistance.size() ? fit.surfaceDistance.mean() : 0.0);
+    usedColumn->SetValue(k, static_cast<int>(std::count(fit.used.begin(), fit.used.end(), 1)));
+    nearestColumn->SetValue(k, fit.nearestValid);
+    roundsColumn->SetValue(k, fit.rounds);
+    iterationsColumn->SetValue(k, fit.iterations);
+    energyColumn->SetValue(k, fit.energy);
+    secondsColumn->SetValue(k, fit.seconds);
+  }
+  for (vtkAbstractArray* column :
+       {static_cast<vtkAbstractArray*>(frameColumn), static_cast<vtkAbstractArray*>(distanceColumn),
+        static_cast<vtkAbstractArray*>(usedColumn), static_cast<vtkAbstractArray*>(nearestColumn),
+        static_cast<vtkAbstractArray*>(roundsColumn),
+        static_cast<vtkAbstractArray*>(iterationsColumn),
+        static_cast<vtkAbstractArray*>(energyColumn), static_cast<vtkAbstractArray*>(secondsColumn),
+        static_cast<vtkAbstractArray*>(coverageColumn),
+        static_cast<vtkAbstractArray*>(stretchColumn), static_cast<vtkAbstractArray*>(foldedColumn),
+        static_cast<vtkAbstractArray*>(confidenceColumn),
+        static_cast<vtkAbstractArray*>(attemptsColumn)})
+    table->AddColumn(column);
+}
+} // namespace
+
 int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                vtkInformationVector* outputVector)
 {
   using namespace clothtrack;
   auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
   auto* correspondence = vtkMultiBlockDataSet::GetData(inputVector[1], 0);
+  ThreadBudget threads(this->NumberOfThreads);
   try
   {
     checkOneBlockPerFrame(sequence, correspondence, "template fit", "correspondence");
     const int n = static_cast<int>(sequence->GetNumberOfBlocks());
-    auto* first = vtkPolyData::SafeDownCast(correspondence->GetBlock(0));
-    vtkDataArray* templateField =
-        first ? first->GetFieldData()->GetArray(clothtrack::arrays::TemplateFrame) : nullptr;
-    if (!templateField)
-      throw Error("template fit: the correspondence blocks carry no TemplateFrame (use "
-                  "ctPatchCorrespondence)");
-    const int j = static_cast<int>(templateField->GetComponent(0, 0));
-    if (j < 0 || j >= n)
-      throw Error("template fit: the template frame " + std::to_string(j) +
-                  " is not in the sequence");
+    const int j = correspondenceTemplateFrame(correspondence, n);
     // The template is frame j itself: its geometry, with the correspondence's connectivity.
     const TriangleMesh templateMesh = frameMesh(sequence, j);
-    auto* templateData = vtkPolyData::SafeDownCast(sequence->GetBlock(j));
     const int nv = templateMesh.numVertices();
-
-    TemplateFitOptions options;
-    options.stages.clear();
-    for (const auto& s : this->Stages) options.stages.push_back({s[0], s[1], s[2], s[3]});
-    options.solver = this->Solver == LBFGS ? FitSolver::LBFGS : FitSolver::Exact;
-    options.roundsPerStage = this->RoundsPerStage;
-    options.solverTolerance = this->SolverTolerance;
-    options.intermediateTolerance = this->IntermediateTolerance;
-    options.refactorSteps = this->RefactorSteps;
-    options.nearestReuse = this->NearestReuse;
-    options.nearestEvery = this->NearestEvery;
-    options.maxNearestDistance = this->MaximumNearestDistance;
-    options.maxNormalAngle = this->MaximumNormalAngle;
-    options.useCorrespondence = this->UseCorrespondence;
-    options.useNearest = this->UseNearest;
-
     std::vector<TriangleMesh> frames(n);
     for (int k = 0; k < n; ++k) frames[k] = frameMesh(sequence, k);
     SequenceFitHooks hooks;
@@ -195,7 +284,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
                                ? vtkMultiBlockDataSet::GetData(inputVector[2], 0)
                                : nullptr;
     std::vector<std::vector<OrientedSurfacePoint>> landmarks;
-    if (landmarkBlocks && this->PredictRadius > 0)
+    if (landmarkBlocks && this->Prediction.predictRadius > 0)
     {
       checkOneBlockPerFrame(sequence, landmarkBlocks, "template fit", "landmarks");
       for (int k = 0; k < n; ++k)
@@ -205,59 +294,34 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
       hooks.start = landmarkStartPrediction([&](int k) -> const TriangleMesh& { return frames[k]; },
                                             [&](int k) -> const std::vector<OrientedSurfacePoint>&
                                             { return landmarks[k]; },
-                                            this->PredictRadius);
+                                            this->Prediction.predictRadius);
     }
+    if (this->RetryDoubtfulFrames) judgeFits(hooks, templateMesh);
     hooks.progress = [this](double done)
     {
       this->UpdateProgress(done);
       return !this->GetAbortExecute();
     };
-    const std::vector<FrameFit> fits = fitTemplateSequence(templateMesh, j, n, hooks, options);
-
-    auto* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
-    vtkTable* table = vtkTable::GetData(outputVector, 1);
-    output->SetNumberOfBlocks(n);
-    auto frameColumn = namedArray<vtkIntArray>("Frame", n);
-    auto distanceColumn = namedArray<vtkDoubleArray>("MeanSurfaceDistance", n);
-    auto usedColumn = namedArray<vtkIntArray>("CorrespondencesUsed", n);
-    auto nearestColumn = namedArray<vtkIntArray>("NearestValid", n);
-    auto roundsColumn = namedArray<vtkIntArray>("Rounds", n);
-    auto iterationsColumn = namedArray<vtkIntArray>("Iterations", n);
-    auto energyColumn = namedArray<vtkDoubleArray>("Energy", n);
-    auto secondsColumn = namedArray<vtkDoubleArray>("Seconds", n);
+    const std::vector<FrameFit> fits =
+        fitTemplateSequence(templateMesh, j, n, hooks, this->Options);
+    addAlignedBlocks(vtkMultiBlockDataSet::GetData(outputVector, 0), sequence, templateMesh, j,
+                     fits);
+    // Nothing is passed on unjudged: each frame's confidence, and a warning for a doubtful one.
+    std::vector<const Points*> aligned;
+    std::vector<const TriangleMesh*> framePointers;
+    std::vector<double> known;
     for (int k = 0; k < n; ++k)
     {
-      const FrameFit& fit = fits[k];
-      vtkSmartPointer<vtkPolyData> block = alignedPolyData(templateData, templateMesh, fit);
-      addFieldValue(block->GetFieldData(), clothtrack::arrays::FrameIndex, k);
-      addFieldValue(block->GetFieldData(), clothtrack::arrays::TemplateFrame, j);
-      // The frame's own time and name, so that players and writers label it as its input.
-      if (auto* input = vtkPolyData::SafeDownCast(sequence->GetBlock(static_cast<unsigned>(k))))
-        for (const char* name : {clothtrack::arrays::TimeValue, clothtrack::arrays::FrameNumber,
-                                 clothtrack::arrays::SourceFile})
-          if (vtkAbstractArray* array = input->GetFieldData()->GetAbstractArray(name))
-            block->GetFieldData()->AddArray(array);
-      output->SetBlock(k, block);
-      output->GetMetaData(static_cast<unsigned>(k))
-          ->Set(vtkCompositeDataSet::NAME(), ("aligned_" + std::to_string(k)).c_str());
-      frameColumn->SetValue(k, k);
-      distanceColumn->SetValue(k, fit.surfaceDistance.size() ? fit.surfaceDistance.mean() : 0.0);
-      usedColumn->SetValue(k, static_cast<int>(std::count(fit.used.begin(), fit.used.end(), 1)));
-      nearestColumn->SetValue(k, fit.nearestValid);
-      roundsColumn->SetValue(k, fit.rounds);
-      iterationsColumn->SetValue(k, fit.iterations);
-      energyColumn->SetValue(k, fit.energy);
-      secondsColumn->SetValue(k, fit.seconds);
+      aligned.push_back(&fits[k].positions);
+      framePointers.push_back(&frames[k]);
+      known.push_back(fits[k].surfaceDistance.size() ? fits[k].surfaceDistance.mean() : -1.0);
     }
-    for (vtkAbstractArray* column :
-         {static_cast<vtkAbstractArray*>(frameColumn),
-          static_cast<vtkAbstractArray*>(distanceColumn),
-          static_cast<vtkAbstractArray*>(usedColumn), static_cast<vtkAbstractArray*>(nearestColumn),
-          static_cast<vtkAbstractArray*>(roundsColumn),
-          static_cast<vtkAbstractArray*>(iterationsColumn),
-          static_cast<vtkAbstractArray*>(energyColumn),
-          static_cast<vtkAbstractArray*>(secondsColumn)})
-      table->AddColumn(column);
+    const SequenceQuality quality =
+        sequenceQuality(aligned, templateMesh.F, framePointers, known, j);
+    for (int k : quality.doubtfulFrames)
+      vtkWarningMacro(<< "template fit: " << frameName(sequence->GetBlock(k), k)
+                      << " is doubtful: " << quality.confidence[k].doubt);
+    addSummaryRows(vtkTable::GetData(outputVector, 1), fits, quality.confidence);
   }
   catch (const Error& e)
   {
@@ -270,19 +334,22 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
 void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Solver: " << (this->Solver == LBFGS ? "L-BFGS" : "exact") << "\n";
-  for (const auto& s : this->Stages)
-    os << indent << "Stage (wc, ws, wd, wt): " << s[0] << ", " << s[1] << ", " << s[2] << ", "
-       << s[3] << "\n";
-  os << indent << "RoundsPerStage: " << this->RoundsPerStage << "\n";
-  os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
-  os << indent << "IntermediateTolerance: " << this->IntermediateTolerance << "\n";
-  os << indent << "RefactorSteps: " << this->RefactorSteps << "\n";
-  os << indent << "NearestReuse: " << this->NearestReuse << "\n";
-  os << indent << "NearestEvery: " << this->NearestEvery << "\n";
-  os << indent << "MaximumNearestDistance: " << this->MaximumNearestDistance << "\n";
-  os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
-  os << indent << "UseCorrespondence: " << this->UseCorrespondence << "\n";
-  os << indent << "UseNearest: " << this->UseNearest << "\n";
-  os << indent << "PredictRadius: " << this->PredictRadius << "\n";
+  os << indent << "Solver: " << (this->GetSolver() == LBFGS ? "L-BFGS" : "exact") << "\n";
+  os << indent << "FactorBackend: " << (this->GetFactorBackend() == CHOLMOD ? "CHOLMOD" : "block")
+     << "\n";
+  for (const auto& s : this->Options.stages)
+    os << indent << "Stage (wc, ws, wd, wt): " << s.correspondence << ", " << s.smoothness << ", "
+       << s.nearest << ", " << s.temporal << "\n";
+  os << indent << "RoundsPerStage: " << this->Options.roundsPerStage << "\n";
+  os << indent << "SolverTolerance: " << this->Options.solverTolerance << "\n";
+  os << indent << "IntermediateTolerance: " << this->Options.intermediateTolerance << "\n";
+  os << indent << "RefactorSteps: " << this->Options.refactorSteps << "\n";
+  os << indent << "NearestReuse: " << this->Options.nearestReuse << "\n";
+  os << indent << "NearestEvery: " << this->Options.nearestEvery << "\n";
+  os << indent << "MaximumNearestDistance: " << this->Options.maximumNearestDistance << "\n";
+  os << indent << "MaximumNormalAngle: " << this->Options.maximumNormalAngle << "\n";
+  os << indent << "UseCorrespondence: " << this->Options.useCorrespondence << "\n";
+  os << indent << "UseNearest: " << this->Options.useNearest << "\n";
+  os << indent << "RetryDoubtfulFrames: " << this->RetryDoubtfulFrames << "\n";
+  os << indent << "PredictRadius: " << this->Prediction.predictRadius << "\n";
 }

@@ -27,7 +27,9 @@
  * Displacement (from the template), CorrespondenceUsed (0/1) and SurfaceDistance (to the
  * frame's surface, metres); field data FrameIndex and TemplateFrame.
  * Output port 1: vtkTable, one row per frame: Frame, MeanSurfaceDistance, CorrespondencesUsed,
- * NearestValid, Rounds, Iterations, Energy, Seconds.
+ * NearestValid, Rounds, Iterations, Energy, Seconds, and the frame's ground-truth-free
+ * confidence (clothtrack/eval/FrameConfidence.h): CoverageDistance, Stretch, Folded, Confidence.
+ * A doubtful frame is also a warning saying why.
  *
  * A corrupt frame, a correspondence block that does not match the template or non-finite
  * input is an error naming the frame; a frame without correspondence is fitted from nearest
@@ -37,6 +39,9 @@
 #define ctTemplateFit_h
 
 #include "ctFiltersModule.h"
+
+#include <clothtrack/fit/MotionPrediction.h>
+#include <clothtrack/fit/TemplateFit.h>
 
 #include <vtkMultiBlockDataSetAlgorithm.h>
 
@@ -57,55 +62,75 @@ public:
     EXACT = 0,
     LBFGS = 1
   };
-  vtkSetClampMacro(Solver, int, EXACT, LBFGS);
-  vtkGetMacro(Solver, int);
+  virtual void SetSolver(int solver);
+  virtual int GetSolver();
+
+  /// Exact solver: the factorisation behind the preconditioner, the block Cholesky (default)
+  /// or CHOLMOD's supernodal one (where the build has it; see docs/template-fit.md).
+  enum FactorBackends
+  {
+    BLOCK = 0,
+    CHOLMOD = 1
+  };
+  virtual void SetFactorBackend(int backend);
+  virtual int GetFactorBackend();
 
   /// Stages of weights (wc, ws, wd, wt), applied in order. AddStage appends one;
   /// RemoveAllStages clears them (an update with no stage is an error).
   void AddStage(double correspondence, double smoothness, double nearest, double temporal);
   void RemoveAllStages();
-  int GetNumberOfStages() const { return static_cast<int>(this->Stages.size()); }
+  int GetNumberOfStages() const { return static_cast<int>(this->Options.stages.size()); }
   /// Restores the paper's four stages.
   void SetDefaultStages();
 
   /// Rounds of (nearest points, minimisation) per stage that uses nearest points.
-  vtkSetClampMacro(RoundsPerStage, int, 1, 100);
-  vtkGetMacro(RoundsPerStage, int);
+  virtual void SetRoundsPerStage(int value);
+  virtual int GetRoundsPerStage();
   /// Exact solver: relative residual at which each round's solve stops.
-  vtkSetClampMacro(SolverTolerance, double, 1e-12, 0.5);
-  vtkGetMacro(SolverTolerance, double);
-  vtkSetClampMacro(IntermediateTolerance, double, 1e-12, 0.5);
-  vtkGetMacro(IntermediateTolerance, double);
+  virtual void SetSolverTolerance(double value);
+  virtual double GetSolverTolerance();
+  virtual void SetIntermediateTolerance(double value);
+  virtual double GetIntermediateTolerance();
   /// Exact solver: a stage's factorisation is renewed after a frame whose rounds needed more
   /// conjugate-gradient steps than this on average (0: only when they fail to converge).
-  vtkSetClampMacro(RefactorSteps, double, 0.0, 1000.0);
-  vtkGetMacro(RefactorSteps, double);
+  virtual void SetRefactorSteps(double value);
+  virtual double GetRefactorSteps();
   /// A template vertex that moved less than this (metres) since its last closest-point search
   /// is projected onto the same triangle: the point found is at most twice this much farther
   /// than the closest. 0 searches every round.
-  vtkSetClampMacro(NearestReuse, double, 0.0, 0.01);
-  vtkGetMacro(NearestReuse, double);
+  virtual void SetNearestReuse(double value);
+  virtual double GetNearestReuse();
   /// L-BFGS iterations per round (the paper: nearest points every 20 iterations).
-  vtkSetClampMacro(NearestEvery, int, 1, 10000);
-  vtkGetMacro(NearestEvery, int);
+  virtual void SetNearestEvery(int value);
+  virtual int GetNearestEvery();
   /// Nearest points further than this are not used (metres).
-  vtkSetClampMacro(MaximumNearestDistance, double, 1e-6, 100.0);
-  vtkGetMacro(MaximumNearestDistance, double);
+  virtual void SetMaximumNearestDistance(double value);
+  virtual double GetMaximumNearestDistance();
   /// Nearest points whose normal is this far or further from the template's are not used.
-  vtkSetClampMacro(MaximumNormalAngle, double, 1.0, 180.0);
-  vtkGetMacro(MaximumNormalAngle, double);
+  virtual void SetMaximumNormalAngle(double value);
+  virtual double GetMaximumNormalAngle();
   /// Ablations: the correspondence term Ec, the nearest-point term Ed.
-  vtkSetMacro(UseCorrespondence, bool);
-  vtkGetMacro(UseCorrespondence, bool);
+  virtual void SetUseCorrespondence(bool value);
+  virtual bool GetUseCorrespondence();
   vtkBooleanMacro(UseCorrespondence, bool);
-  vtkSetMacro(UseNearest, bool);
-  vtkGetMacro(UseNearest, bool);
+  virtual void SetUseNearest(bool value);
+  virtual bool GetUseNearest();
   vtkBooleanMacro(UseNearest, bool);
 
   /// With landmarks on input port 2: Gaussian width (metres) of the locally rigid motion that
   /// predicts each frame's start; 0 starts from the neighbour's fit as it is.
-  vtkSetClampMacro(PredictRadius, double, 0.0, 100.0);
-  vtkGetMacro(PredictRadius, double);
+  virtual void SetPredictRadius(double value);
+  virtual double GetPredictRadius();
+
+  /// A frame whose fit is clearly doubtful (clothtrack/pipeline/FitJudge.h) is fitted again
+  /// from other starts and the most confident fit kept (default on).
+  vtkSetMacro(RetryDoubtfulFrames, bool);
+  vtkGetMacro(RetryDoubtfulFrames, bool);
+  vtkBooleanMacro(RetryDoubtfulFrames, bool);
+
+  /// Threads of this filter's loops (0: the process's count, every core by default).
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
 
   vtkTable* GetSummaryOutput();
 
@@ -122,19 +147,10 @@ private:
   ctTemplateFit(const ctTemplateFit&) = delete;
   void operator=(const ctTemplateFit&) = delete;
 
-  int Solver = EXACT;
-  std::vector<std::array<double, 4>> Stages;
-  int RoundsPerStage = 5;
-  double SolverTolerance = 1e-4;
-  double IntermediateTolerance = 1e-4;
-  double RefactorSteps = 4.0;
-  double NearestReuse = 2e-4;
-  int NearestEvery = 20;
-  double MaximumNearestDistance = 0.2;
-  double MaximumNormalAngle = 90.0;
-  bool UseCorrespondence = true;
-  bool UseNearest = true;
-  double PredictRadius = 0.3;
+  int NumberOfThreads = 0;
+  bool RetryDoubtfulFrames = true;
+  clothtrack::TemplateFitOptions Options;
+  clothtrack::StartPredictionOptions Prediction;
 };
 
 #endif

@@ -1,12 +1,14 @@
 #include "ctTemplateSelection.h"
+#include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
-#include "ctMeshConversion.h"
 #include "ctNamedArrays.h"
 
+#include "ctFrameName.h"
+
 #include <clothtrack/base/Error.h>
-#include <clothtrack/mesh/MeshValidation.h>
-#include <clothtrack/selection/TemplateSelection.h>
+#include <clothtrack/base/Parallel.h>
+#include <clothtrack/pipeline/TemplateStage.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -16,14 +18,20 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
-#include <vtkSMPTools.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 
-#include <atomic>
+#include <algorithm>
 #include <cmath>
 
 vtkStandardNewMacro(ctTemplateSelection);
+
+ctOptionClampDefinition(ctTemplateSelection, MinimumShellArea, double, Options.minimumShellArea,
+                        0.0, 100.0);
+ctOptionClampDefinition(ctTemplateSelection, Persistence, int, Options.persistence, 1, 10000);
+
+ctOptionEnumDefinition(ctTemplateSelection, TemplateCriterion, clothtrack::TemplateCriterion,
+                       Options.templateCriterion, 0, 1);
 
 ctTemplateSelection::ctTemplateSelection()
 {
@@ -49,86 +57,14 @@ int ctTemplateSelection::FillOutputPortInformation(int port, vtkInformation* inf
   return 1;
 }
 
-int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inputVector,
-                                     vtkInformationVector* outputVector)
+namespace
 {
-  using namespace clothtrack;
-  auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
-  const int n = static_cast<int>(sequence->GetNumberOfBlocks());
-  if (n == 0)
-  {
-    vtkErrorMacro(<< "template selection: the sequence has no frame");
-    return 0;
-  }
-  std::vector<FrameTopology> frames(n);
-  std::vector<std::string> errors(n);
-  std::atomic<int> done{0};
-  // Frames are independent: analyse them in parallel.
-  vtkSMPTools::For(0, n,
-                   [&](vtkIdType begin, vtkIdType end)
-                   {
-                     for (vtkIdType k = begin; k < end; ++k)
-                     {
-                       try
-                       {
-                         auto* poly = vtkPolyData::SafeDownCast(
-                             sequence->GetBlock(static_cast<unsigned>(k)));
-                         const std::string name = "frame " + std::to_string(k);
-                         if (!poly) throw Error(name + " is not a vtkPolyData");
-                         const TriangleMesh mesh = toTriangleMesh(poly, name);
-                         validateMesh(mesh, name);
-                         frames[k] = frameTopology(mesh, this->MinimumShellArea);
-                       }
-                       catch (const Error& e)
-                       {
-                         errors[k] = e.what();
-                       }
-                       ++done;
-                     }
-                   });
-  for (const auto& e : errors)
-    if (!e.empty())
-    {
-      vtkErrorMacro(<< "template selection: " << e);
-      return 0;
-    }
-  std::vector<double> restPose;
-  if (auto* body = vtkMultiBlockDataSet::GetData(inputVector[1], 0))
-  {
-    if (static_cast<int>(body->GetNumberOfBlocks()) != n)
-    {
-      vtkErrorMacro(<< "template selection: the body fit has " << body->GetNumberOfBlocks()
-                    << " frames, the sequence " << n);
-      return 0;
-    }
-    restPose = blockFieldValues(body, clothtrack::arrays::RestPoseDistance, NAN);
-  }
-  TemplateSelectionOptions options;
-  options.minimumShellArea = this->MinimumShellArea;
-  options.persistence = this->Persistence;
-  options.criterion = static_cast<TemplateCriterion>(this->Criterion);
-  const TemplateSelection selection = selectTemplate(frames, options, restPose);
-  if (this->TemplateFrame >= n)
-  {
-    vtkErrorMacro(<< "template frame " << this->TemplateFrame << " out of range: the sequence has "
-                  << n << " frames");
-    return 0;
-  }
-  this->ChosenFrame = this->TemplateFrame >= 0 ? this->TemplateFrame : selection.chosen;
-
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->ShallowCopy(sequence->GetBlock(static_cast<unsigned>(this->ChosenFrame)));
-  vtkNew<vtkIntArray> chosen;
-  chosen->SetName(clothtrack::arrays::TemplateFrame);
-  chosen->InsertNextValue(this->ChosenFrame);
-  output->GetFieldData()->AddArray(chosen);
-  vtkNew<vtkStringArray> decidedBy;
-  decidedBy->SetName("TemplateCriterion");
-  decidedBy->InsertNextValue(this->TemplateFrame >= 0 ? "given"
-                                                      : templateCriterionName(selection.decidedBy));
-  output->GetFieldData()->AddArray(decidedBy);
-
-  vtkTable* table = vtkTable::GetData(outputVector, 1);
+/// Output port 1: every frame's criteria and the choice.
+void addCriteriaRows(vtkTable* table, const clothtrack::TemplateSelection& selection,
+                     const std::vector<double>& restPose, int chosenFrame)
+{
+  const auto& frames = selection.frames;
+  const int n = static_cast<int>(frames.size());
   auto column = [&](const char* name, auto&& value, auto* array)
   {
     array->SetName(name);
@@ -161,16 +97,64 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
       "Candidate", [&](int k) { return static_cast<int>(selection.candidate[k]); },
       vtkNew<vtkIntArray>().GetPointer());
   column(
-      "Chosen", [&](int k) { return k == this->ChosenFrame ? 1 : 0; },
+      "Chosen", [&](int k) { return k == chosenFrame ? 1 : 0; },
       vtkNew<vtkIntArray>().GetPointer());
+}
+} // namespace
+
+int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                     vtkInformationVector* outputVector)
+{
+  using namespace clothtrack;
+  vtkMultiBlockDataSet* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
+  ThreadBudget threads(this->NumberOfThreads);
+  try
+  {
+    const int n = sequence ? static_cast<int>(sequence->GetNumberOfBlocks()) : 0;
+    if (n == 0) throw Error("template selection: the sequence has no frame");
+    if (this->TemplateFrame >= n)
+      throw Error("template frame " + std::to_string(this->TemplateFrame) +
+                  " out of range: the sequence has " + std::to_string(n) + " frames");
+    std::vector<TriangleMesh> frames(n);
+    std::vector<const TriangleMesh*> pointers(n);
+    for (int k = 0; k < n; ++k)
+    {
+      frames[k] = frameMesh(sequence, k);
+      pointers[k] = &frames[k];
+    }
+    std::vector<double> restPose;
+    if (auto* body = vtkMultiBlockDataSet::GetData(inputVector[1], 0))
+    {
+      checkOneBlockPerFrame(sequence, body, "template selection", "body fit");
+      restPose = blockFieldValues(body, clothtrack::arrays::RestPoseDistance, NAN);
+    }
+    const TemplateSelection selection = chooseTemplateFrame(pointers, this->Options, restPose);
+    this->ChosenFrame = this->TemplateFrame >= 0 ? this->TemplateFrame : selection.chosen;
+
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    output->ShallowCopy(sequence->GetBlock(static_cast<unsigned>(this->ChosenFrame)));
+    clothtrack::addFieldValue(output->GetFieldData(), clothtrack::arrays::TemplateFrame,
+                              this->ChosenFrame);
+    vtkNew<vtkStringArray> decidedBy;
+    decidedBy->SetName("TemplateCriterion");
+    decidedBy->InsertNextValue(
+        this->TemplateFrame >= 0 ? "given" : templateCriterionName(selection.decidedBy));
+    output->GetFieldData()->AddArray(decidedBy);
+    addCriteriaRows(vtkTable::GetData(outputVector, 1), selection, restPose, this->ChosenFrame);
+  }
+  catch (const Error& e)
+  {
+    vtkErrorMacro(<< "template selection: " << e.what());
+    return 0;
+  }
   return 1;
 }
 
 void ctTemplateSelection::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "MinimumShellArea: " << this->MinimumShellArea << "\n";
-  os << indent << "Persistence: " << this->Persistence << "\n";
-  os << indent << "Criterion: " << this->Criterion << "\n";
+  os << indent << "MinimumShellArea: " << this->Options.minimumShellArea << "\n";
+  os << indent << "Persistence: " << this->Options.persistence << "\n";
+  os << indent << "TemplateCriterion: " << this->GetTemplateCriterion() << "\n";
   os << indent << "TemplateFrame: " << this->TemplateFrame << "\n";
 }

@@ -7,10 +7,11 @@
  * ctMeshSequenceReader). Per frame: connected components, shells (components of at least
  * MinimumShellArea), genus of the largest component and its area ratio (largest / smallest
  * mixed Voronoi vertex area). Splits count only when they persist for Persistence consecutive
- * frames. Candidates have the most shells, then the smallest genus. Among them, with Criterion
- * RestPose (default) and the body fit on input port 1, the template is the candidate whose
- * fitted body is closest to the rest pose; otherwise (Criterion AreaRatio, the paper's, or no
- * body fit) the candidate with the smallest area ratio. TemplateFrame >= 0 overrides the choice.
+ * frames. Candidates have the most shells, then the smallest genus. Among them, with
+ * TemplateCriterion RestPose (default) and the body fit on input port 1, the template is the
+ * candidate whose fitted body is closest to the rest pose; otherwise (TemplateCriterion AreaRatio,
+ * the paper's, or no body fit) the candidate with the smallest area ratio. TemplateFrame >= 0
+ * overrides the choice.
  *
  * Input port 1 (optional): one block per frame with field data RestPoseDistance, as output
  * port 0 or 1 of ctBodyFit.
@@ -23,6 +24,8 @@
 
 #include "ctFiltersModule.h"
 
+#include <clothtrack/selection/TemplateSelection.h>
+
 #include <vtkPolyDataAlgorithm.h>
 
 class vtkTable;
@@ -34,14 +37,20 @@ public:
   vtkTypeMacro(ctTemplateSelection, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  vtkSetClampMacro(MinimumShellArea, double, 0.0, 100.0);
-  vtkGetMacro(MinimumShellArea, double);
-  vtkSetClampMacro(Persistence, int, 1, 10000);
-  vtkGetMacro(Persistence, int);
+  virtual void SetMinimumShellArea(double value);
+  virtual double GetMinimumShellArea();
+  virtual void SetPersistence(int value);
+  virtual int GetPersistence();
   /// Last criterion among the topological candidates: 0 area ratio (the paper's), 1 rest pose
   /// (default; needs the body fit on port 1, else the area ratio decides).
-  vtkSetClampMacro(Criterion, int, 0, 1);
-  vtkGetMacro(Criterion, int);
+  virtual void SetTemplateCriterion(int criterion);
+  virtual int GetTemplateCriterion();
+  /// Former name of TemplateCriterion, kept for existing scripts.
+  void SetCriterion(int criterion) { this->SetTemplateCriterion(criterion); }
+  int GetCriterion() { return this->GetTemplateCriterion(); }
+  /// Threads of this filter's loops (0: the process's count, every core by default).
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
   /// The body fit (output port 0 or 1 of ctBodyFit) on input port 1.
   void SetBodyFitConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   /// A frame index to use as template; -1 (default) chooses automatically.
@@ -60,16 +69,14 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
                   vtkInformationVector* outputVector) override;
-
-  double MinimumShellArea = 0.1;
-  int Persistence = 3;
-  int Criterion = 1;
   int TemplateFrame = -1;
+  int NumberOfThreads = 0;
   int ChosenFrame = -1;
 
 private:
   ctTemplateSelection(const ctTemplateSelection&) = delete;
   void operator=(const ctTemplateSelection&) = delete;
+  clothtrack::TemplateSelectionOptions Options;
 };
 
 #endif

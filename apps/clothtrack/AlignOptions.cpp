@@ -58,9 +58,13 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "stages", po::value(&stageSpec),
       "template fit weight stages wc,ws,wd,wt separated by '/' (default the paper's: "
       "1,400,0,0.1/1,200,10,0.1/0,100,10,0.1/0,50,10,0.1)")(
-      "predict-radius", po::value(&s.predictRadius)->default_value(s.predictRadius),
+      "predict-radius",
+      po::value(&s.prediction.predictRadius)->default_value(s.prediction.predictRadius),
       "each frame's fit starts from its neighbour's moved by the landmarks' locally rigid motion, "
       "weighted over this radius (m; 0: from the neighbour's fit as it is)")(
+      "no-retry", po::bool_switch(),
+      "keep a frame's first fit even when it is clearly doubtful (by default such a frame is "
+      "fitted again from other starts and the most confident fit kept)")(
       "no-correspondence", po::bool_switch(),
       "ablation: fit without the correspondence term Ec (with --predict-radius 0: nearest "
       "points alone, a sequential non-rigid ICP)");
@@ -71,25 +75,30 @@ void addCorrespondenceOptions(po::options_description& options, AlignSettings& s
 {
   PatchCorrespondenceOptions& patches = s.patches;
   TemplateSelectionOptions& selection = s.selection;
-  options.add_options()("template", po::value(&s.forcedTemplate)->default_value(-1),
-                        "template frame within the selected frames (-1: chosen automatically)")(
+  options.add_options()(
+      "template-frame,template", po::value(&s.forcedTemplate)->default_value(-1),
+      "template frame within the selected frames (-1: chosen automatically; also --template)")(
       "template-criterion", po::value(&criterion)->default_value(criterion),
       "last template criterion after the topology: rest-pose (fitted body closest to the rest "
       "pose) or area-ratio (the paper's: most uniform mesh)")(
-      "min-shell-area",
+      "minimum-shell-area,min-shell-area",
       po::value(&selection.minimumShellArea)->default_value(selection.minimumShellArea),
-      "template choice: components smaller than this (m^2) are not counted as body parts")(
+      "template choice: components smaller than this (m^2) are not counted as body parts (also "
+      "--min-shell-area)")(
       "persistence", po::value(&selection.persistence)->default_value(selection.persistence),
       "template choice: a split counts only if it lasts this many consecutive frames")(
       "epsilon", po::value(&patches.epsilon)->default_value(patches.epsilon),
       "near-isometry tolerance of the patches (m)")(
-      "max-radius", po::value(&patches.maxRadius)->default_value(patches.maxRadius),
-      "patch radius tau_d (m)")("min-radius",
-                                po::value(&patches.minRadius)->default_value(patches.minRadius),
-                                "smallest patch kept, tau_s (m)")(
-      "seed-consensus", po::value(&patches.minConsensus)->default_value(patches.minConsensus),
+      "maximum-radius,max-radius",
+      po::value(&patches.maximumRadius)->default_value(patches.maximumRadius),
+      "patch radius tau_d (m; also --max-radius)")(
+      "minimum-radius,min-radius",
+      po::value(&patches.minimumRadius)->default_value(patches.minimumRadius),
+      "smallest patch kept, tau_s (m; also --min-radius)")(
+      "minimum-seed-consensus,seed-consensus",
+      po::value(&patches.minimumSeedConsensus)->default_value(patches.minimumSeedConsensus),
       "share of the nearby landmarks whose geodesic distances a landmark pair must preserve to "
-      "seed a patch (0: every pair seeds one)");
+      "seed a patch (0: every pair seeds one; also --seed-consensus)");
 }
 
 void addRunOptions(po::options_description& options, AlignSettings& s)
@@ -106,8 +115,10 @@ void addRunOptions(po::options_description& options, AlignSettings& s)
       "threads (0: all cores)")("skip-bad-frames", po::bool_switch(&s.skipBadFrames),
                                 "leave out unreadable frames with a warning instead of stopping")(
       "no-report", po::bool_switch(&s.noReport), "skip the plots, renders and report.html")(
-      "truth-distance", po::value(&s.truthDistance)->default_value(s.truthDistance),
-      "template vertices further than this from the ground truth have no error (m)")(
+      "maximum-truth-distance,truth-distance",
+      po::value(&s.truth.maximumTruthDistance)->default_value(s.truth.maximumTruthDistance),
+      "template vertices further than this from the ground truth have no error (m; also "
+      "--truth-distance)")(
       "markers", po::value(&s.markersPath),
       "marker trajectories (CSV frame,time,marker,x,y,z, frames numbered as the input's): adds "
       "the error at each marker's nearest template vertex")(
@@ -127,14 +138,17 @@ void check(const AlignSettings& s)
     throw UsageError{"--factor-backend cholmod: this build has no CHOLMOD (libsuitesparse-dev)"};
   if (s.solver != "exact" && s.solver != "lbfgs")
     throw UsageError{"--solver must be exact or lbfgs (got '" + s.solver + "')"};
-  if (!(patches.epsilon > 0) || !(patches.minRadius >= 0) || !(patches.maxRadius > 0))
-    throw UsageError{"--epsilon and --max-radius must be positive, --min-radius at least 0"};
-  if (!(patches.minConsensus >= 0 && patches.minConsensus <= 1))
-    throw UsageError{"--seed-consensus must be between 0 and 1"};
-  if (!(s.selection.minimumShellArea >= 0)) throw UsageError{"--min-shell-area must be 0 or more"};
+  if (!(patches.epsilon > 0) || !(patches.minimumRadius >= 0) || !(patches.maximumRadius > 0))
+    throw UsageError{
+        "--epsilon and --maximum-radius must be positive, --minimum-radius at least 0"};
+  if (!(patches.minimumSeedConsensus >= 0 && patches.minimumSeedConsensus <= 1))
+    throw UsageError{"--minimum-seed-consensus must be between 0 and 1"};
+  if (!(s.selection.minimumShellArea >= 0))
+    throw UsageError{"--minimum-shell-area must be 0 or more"};
   if (s.selection.persistence < 1) throw UsageError{"--persistence must be at least 1"};
-  if (!(s.truthDistance > 0)) throw UsageError{"--truth-distance must be positive"};
-  if (!(s.predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
+  if (!(s.truth.maximumTruthDistance > 0))
+    throw UsageError{"--maximum-truth-distance must be positive"};
+  if (!(s.prediction.predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
   if (!(fit.solverTolerance > 0 && fit.solverTolerance < 1) ||
       !(fit.intermediateTolerance > 0 && fit.intermediateTolerance < 1))
     throw UsageError{"--solver-tolerance and --intermediate-tolerance must be in (0, 1)"};
@@ -162,8 +176,8 @@ const char* usageOf(AlignMode mode)
 
 bool AlignSettings::needLandmarks() const
 {
-  return fit.useCorrespondence || predictRadius > 0 ||
-         (forcedTemplate < 0 && selection.criterion == TemplateCriterion::RestPose);
+  return fit.useCorrespondence || prediction.predictRadius > 0 ||
+         (forcedTemplate < 0 && selection.templateCriterion == TemplateCriterion::RestPose);
 }
 
 nlohmann::json AlignSettings::fitKey() const
@@ -173,9 +187,10 @@ nlohmann::json AlignSettings::fitKey() const
           {"refactor_steps", fit.refactorSteps},
           {"factor_backend", factorBackend},
           {"nearest_reuse", fit.nearestReuse},
-          {"truth_distance", truthDistance},
-          {"predict_radius", predictRadius},
+          {"truth_distance", truth.maximumTruthDistance},
+          {"predict_radius", prediction.predictRadius},
           {"use_correspondence", fit.useCorrespondence},
+          {"retry_doubtful", retryDoubtful},
           {"stages", stagesJson(fit.stages)}};
 }
 
@@ -198,7 +213,8 @@ std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode
       s.factorBackend == "cholmod" ? FactorBackend::Cholmod : FactorBackend::Block;
   if (!stageSpec.empty()) s.fit.stages = parseStages(stageSpec);
   s.fit.useCorrespondence = !values["no-correspondence"].as<bool>();
-  s.selection.criterion = parseTemplateCriterion(criterion);
+  s.retryDoubtful = !values["no-retry"].as<bool>();
+  s.selection.templateCriterion = parseTemplateCriterion(criterion);
   check(s);
   return s;
 }

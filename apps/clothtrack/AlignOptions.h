@@ -5,6 +5,8 @@
 #include "Options.h"
 
 #include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/eval/AlignmentError.h>
+#include <clothtrack/fit/MotionPrediction.h>
 #include <clothtrack/fit/TemplateFit.h>
 #include <clothtrack/selection/TemplateSelection.h>
 
@@ -34,10 +36,12 @@ struct AlignSettings
   int threads = 0;
   int forcedTemplate = -1; ///< -1: chosen automatically
   TemplateSelectionOptions selection;
-  double truthDistance = 0.03;
-  double predictRadius = 0.3;
+  TruthAnchorOptions truth;
+  StartPredictionOptions prediction;
   TemplateFitOptions fit;
   PatchCorrespondenceOptions patches;
+  /// A frame whose fit is clearly doubtful is fitted again from other starts (FitJudge.h).
+  bool retryDoubtful = true;
   bool skipBadFrames = false;
   bool noReport = false;
 

@@ -23,6 +23,7 @@
 #include <clothtrack/io/FrameList.h>
 #include <clothtrack/pipeline/BodyStage.h>
 #include <clothtrack/pipeline/CorrespondenceStage.h>
+#include <clothtrack/pipeline/FitJudge.h>
 #include <clothtrack/pipeline/TemplateStage.h>
 
 #include <nlohmann/json.hpp>
@@ -277,8 +278,8 @@ void startKeys(Run& run)
   const PatchCorrespondenceOptions& p = run.settings.patches;
   run.correspondenceKey = {{"landmarks", run.landmarkKey},
                            {"template", run.templateFrame},
-                           {"patches", {p.epsilon, p.minRadius, p.maxRadius}},
-                           {"seed_consensus", p.minConsensus}};
+                           {"patches", {p.epsilon, p.minimumRadius, p.maximumRadius}},
+                           {"seed_consensus", p.minimumSeedConsensus}};
   const fs::path folder = run.work / "correspondence";
   if (!sameKey(folder / "key.json", run.correspondenceKey))
   {
@@ -344,7 +345,7 @@ void runFitStage(Run& run, const AlignedOutput& output)
   const int n = in.count(), j = run.templateFrame;
   std::optional<TruthAnchors> anchors;
   if (!in.truth.empty())
-    anchors = anchorToTruth(run.templateMesh().V, in.truth[j], s.truthDistance);
+    anchors = anchorToTruth(run.templateMesh().V, in.truth[j], s.truth.maximumTruthDistance);
   run.verticesWithTruth = anchors ? anchors->count() : 0;
   run.errors.assign(n, Eigen::VectorXd());
   auto errorsOf = [&](int k, const Points& positions)
@@ -364,10 +365,12 @@ void runFitStage(Run& run, const AlignedOutput& output)
       targets = std::move(*read);
       return &targets;
     };
-  if (s.predictRadius > 0)
+  if (s.prediction.predictRadius > 0)
     hooks.start = landmarkStartPrediction(
         [&](int k) -> const TriangleMesh& { return in.frames[k]; },
-        [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; }, s.predictRadius);
+        [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; },
+        s.prediction.predictRadius);
+  if (s.retryDoubtful) judgeFits(hooks, run.templateMesh());
   hooks.resumed = [&](int k) { return output.earlier(in.frameNumber[k]); };
   BackgroundWriter writer; // finishes before what its tasks refer to goes
   hooks.fitted = [&](int k, const FrameFit& fit)
@@ -389,6 +392,55 @@ void runFitStage(Run& run, const AlignedOutput& output)
   for (int k = 0; k < n; ++k)
     if (run.fits[k].resumed) errorsOf(k, run.fits[k].positions);
   output.writeCollection(in.frameNumber, s.sequence.fps);
+}
+
+/// The frames fitted again because their first fit was doubtful, and what was kept.
+void addRetryMetrics(nlohmann::json& metrics, const std::vector<FrameFit>& fits)
+{
+  std::vector<int> attempts;
+  nlohmann::json retried = nlohmann::json::array();
+  for (int k = 0; k < static_cast<int>(fits.size()); ++k)
+  {
+    const FrameFit& f = fits[k];
+    attempts.push_back(f.resumed ? 0 : f.attempts);
+    if (f.attempts > 1)
+      retried.push_back({{"frame", k},
+                         {"attempts", f.attempts},
+                         {"kept", f.recovery.empty() ? "the first fit" : f.recovery},
+                         {"severity", f.doubt}});
+  }
+  metrics["per_frame_fit_attempts"] = attempts;
+  metrics["retried_frames"] = retried;
+}
+
+/// Each frame's confidence; every doubtful frame is listed with its doubt and warned about.
+void addConfidenceMetrics(nlohmann::json& metrics, const SequenceQuality& quality,
+                          const std::vector<std::string>& files)
+{
+  std::vector<double> confidence, stretch, folded;
+  for (const FrameConfidence& c : quality.confidence)
+  {
+    confidence.push_back(c.confidence);
+    stretch.push_back(c.stretch);
+    folded.push_back(c.folded);
+  }
+  metrics["per_frame_confidence"] = confidence;
+  metrics["per_frame_stretch"] = stretch;
+  metrics["per_frame_folded"] = folded;
+  nlohmann::json doubtful = nlohmann::json::array();
+  for (int k : quality.doubtfulFrames)
+    doubtful.push_back({{"frame", k}, {"file", files[k]}, {"doubt", quality.confidence[k].doubt}});
+  metrics["doubtful_frames"] = doubtful;
+  const int shown = 10;
+  for (int i = 0; i < static_cast<int>(quality.doubtfulFrames.size()) && i < shown; ++i)
+  {
+    const int k = quality.doubtfulFrames[i];
+    std::fprintf(stderr, "warning: frame %d (%s) is doubtful: %s\n", k, files[k].c_str(),
+                 quality.confidence[k].doubt.c_str());
+  }
+  if (quality.doubtfulFrames.size() > static_cast<size_t>(shown))
+    std::fprintf(stderr, "warning: %zu more doubtful frames (metrics.json: doubtful_frames)\n",
+                 quality.doubtfulFrames.size() - shown);
 }
 
 /// metrics.json: inputs, template, errors (with a ground truth), quality without one, timings.
@@ -413,7 +465,7 @@ nlohmann::json evaluate(const Run& run)
   metrics["resumed_frames"] = resumed;
   metrics["threads"] = threadCount();
   metrics["solver"] = s.solver;
-  metrics["predict_radius_m"] = s.predictRadius;
+  metrics["predict_radius_m"] = s.prediction.predictRadius;
   std::vector<double> landmarkCounts;
   for (const auto& l : run.body.landmarks) landmarkCounts.push_back(static_cast<double>(l.size()));
   metrics["landmarks_per_frame"] = landmarkCounts;
@@ -434,12 +486,14 @@ nlohmann::json evaluate(const Run& run)
   }
   // Without ground truth too: how well the result covers each frame, and how smoothly it moves.
   const SequenceQuality quality =
-      sequenceQuality(aligned, run.templateMesh().F, in.pointers(), known);
+      sequenceQuality(aligned, run.templateMesh().F, in.pointers(), known, j);
   metrics["per_frame_surface_distance_m"] = quality.surfaceDistance;
   metrics["per_frame_coverage_distance_m"] = quality.coverageDistance;
   metrics["mean_surface_distance_m"] = quality.meanSurfaceDistance;
   metrics["mean_coverage_distance_m"] = quality.meanCoverageDistance;
   metrics["mean_jitter_m"] = quality.meanJitter;
+  addConfidenceMetrics(metrics, quality, in.files);
+  addRetryMetrics(metrics, run.fits);
   return metrics;
 }
 

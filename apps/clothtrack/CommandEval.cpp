@@ -58,20 +58,56 @@ vtkSmartPointer<vtkPolyData> readAligned(const fs::path& path)
   copy->DeepCopy(data);
   return copy;
 }
+/// Each aligned frame's vertex errors against the ground truth: the Error array of
+/// aligned.pvd's frames and the error figures of metrics.json.
+void addGroundTruthErrors(nlohmann::json& metrics, const fs::path& out,
+                          const std::vector<int>& frameNumbers, int j,
+                          std::vector<vtkSmartPointer<vtkPolyData>>& frames,
+                          const std::vector<Points>& aligned, const std::string& truthInput,
+                          double truthDistance, const FrameConventions& conventions)
+{
+  const int n = static_cast<int>(frameNumbers.size());
+  const std::vector<std::string> files = listFrames(truthInput);
+  std::vector<std::string> selected;
+  for (int k : frameNumbers)
+  {
+    if (k >= static_cast<int>(files.size()))
+      throw UsageError{truthInput + ": " + std::to_string(files.size()) +
+                       " ground-truth frames, the aligned sequence needs frame " +
+                       std::to_string(k)};
+    selected.push_back(files[k]);
+  }
+  const std::vector<TriangleMesh> truth = loadGroundTruth(selected, conventions);
+  const TruthAnchors anchors = anchorToTruth(aligned[j], truth[j], truthDistance);
+  std::vector<Eigen::VectorXd> errors(n);
+  for (int k = 0; k < n; ++k)
+  {
+    errors[k] = vertexErrors(aligned[k], truth[k], anchors);
+    vtkNew<vtkDoubleArray> array;
+    array->SetName("Error");
+    array->SetNumberOfTuples(errors[k].size());
+    for (Eigen::Index i = 0; i < errors[k].size(); ++i) array->SetValue(i, errors[k][i]);
+    frames[k]->GetPointData()->AddArray(array); // replaces an Error array already there
+    writeCollectionFrame((out / "aligned.pvd").string(), frameNumbers[k], frames[k], false);
+  }
+  addVertexErrorMetrics(metrics, errors, j, truthInput, anchors.count());
+}
 } // namespace
 
 int runEval(const Args& args)
 {
   std::string folder, truthInput, markersPath;
-  double truthDistance = 0.03;
+  double truthDistance = TruthAnchorOptions{}.maximumTruthDistance;
   po::options_description options("eval options");
   options.add_options()("folder", po::value(&folder)->required(),
                         "output folder of 'clothtrack align' (metrics.json, aligned/)")(
       "ground-truth", po::value(&truthInput),
       "ground-truth sequence (one connectivity, the same frames as the aligned input)")(
       "markers", po::value(&markersPath), "marker trajectories (CSV frame,time,marker,x,y,z)")(
-      "truth-distance", po::value(&truthDistance)->default_value(truthDistance),
-      "template vertices further than this from the ground truth have no error (m)");
+      "maximum-truth-distance,truth-distance",
+      po::value(&truthDistance)->default_value(truthDistance),
+      "template vertices further than this from the ground truth have no error (m; also "
+      "--truth-distance)");
   po::positional_options_description positional;
   positional.add("folder", 1);
   po::variables_map values;
@@ -80,7 +116,7 @@ int runEval(const Args& args)
     return 0;
   if (truthInput.empty() && markersPath.empty())
     throw UsageError{"eval needs --ground-truth, --markers or both"};
-  if (!(truthDistance > 0)) throw UsageError{"--truth-distance must be positive"};
+  if (!(truthDistance > 0)) throw UsageError{"--maximum-truth-distance must be positive"};
 
   const fs::path out(folder);
   nlohmann::json metrics = readMetrics(out / "metrics.json");
@@ -116,32 +152,8 @@ int runEval(const Args& args)
   }
 
   if (!truthInput.empty())
-  {
-    const std::vector<std::string> files = listFrames(truthInput);
-    std::vector<std::string> selected;
-    for (int k : frameNumbers)
-    {
-      if (k >= static_cast<int>(files.size()))
-        throw UsageError{truthInput + ": " + std::to_string(files.size()) +
-                         " ground-truth frames, the aligned sequence needs frame " +
-                         std::to_string(k)};
-      selected.push_back(files[k]);
-    }
-    const std::vector<TriangleMesh> truth = loadGroundTruth(selected, toConventions(seq));
-    const TruthAnchors anchors = anchorToTruth(aligned[j], truth[j], truthDistance);
-    std::vector<Eigen::VectorXd> errors(n);
-    for (int k = 0; k < n; ++k)
-    {
-      errors[k] = vertexErrors(aligned[k], truth[k], anchors);
-      vtkNew<vtkDoubleArray> array;
-      array->SetName("Error");
-      array->SetNumberOfTuples(errors[k].size());
-      for (Eigen::Index i = 0; i < errors[k].size(); ++i) array->SetValue(i, errors[k][i]);
-      frames[k]->GetPointData()->AddArray(array); // replaces an Error array already there
-      writeCollectionFrame((out / "aligned.pvd").string(), frameNumbers[k], frames[k], false);
-    }
-    addVertexErrorMetrics(metrics, errors, j, truthInput, anchors.count());
-  }
+    addGroundTruthErrors(metrics, out, frameNumbers, j, frames, aligned, truthInput, truthDistance,
+                         toConventions(seq));
   if (!markersPath.empty())
     addMarkerMetrics(metrics, aligned, selectedMarkers(markersPath, frameNumbers), j, markersPath);
   writeTextAtomically((out / "metrics.json").string(), metrics.dump(2) + "\n");

@@ -61,6 +61,58 @@ std::vector<double> readRestPoseDistances(const std::string& path,
   }
 }
 
+/// Each frame's criteria, as read.
+struct FrameTableRows
+{
+  const std::vector<FrameTopology>& criteria;
+  const std::vector<int>& vertices;
+  const std::vector<int>& faces;
+};
+
+/// The table on stdout and, with a path, as CSV; with `chosen`, the choice's columns too.
+void printFrameTable(const std::vector<std::string>& frames, const FrameTableRows& rows,
+                     const TemplateSelection* chosen, const std::vector<double>& restPose,
+                     const std::string& csvPath)
+{
+  std::FILE* csv = nullptr;
+  if (!csvPath.empty() && !(csv = std::fopen(csvPath.c_str(), "w")))
+    throw UsageError{csvPath + ": cannot write file"};
+  if (csv)
+    std::fprintf(csv,
+                 "frame,file,vertices,faces,components,shells,genus_largest,boundaries_largest,"
+                 "area_largest_m2,"
+                 "area_ratio,non_manifold_edges%s\n",
+                 chosen ? ",persistent_shells,rest_pose_distance,candidate,chosen" : "");
+  std::printf("%5s %-24s %8s %8s %5s %6s %5s %5s %8s %10s %4s%s\n", "frame", "file", "verts",
+              "faces", "comp", "shells", "genus", "holes", "area", "area_ratio", "nme",
+              chosen ? "  persist  rest_pose cand" : "");
+  for (size_t k = 0; k < frames.size(); ++k)
+  {
+    const FrameTopology& t = rows.criteria[k];
+    const std::string file = std::filesystem::path(frames[k]).filename().string();
+    std::printf("%5zu %-24.24s %8d %8d %5d %6d %5d %5d %8.4f %10.1f %4d", k, file.c_str(),
+                rows.vertices[k], rows.faces[k], t.components, t.shells, t.genus, t.boundaries,
+                t.area, t.areaRatio, t.nonManifoldEdges);
+    if (chosen)
+      std::printf("  %7d %10.3f %4s%s", chosen->persistentShells[k],
+                  restPose.empty() ? NAN : restPose[k], chosen->candidate[k] ? "yes" : "",
+                  static_cast<int>(k) == chosen->chosen ? "  <- template" : "");
+    std::printf("\n");
+    if (csv)
+    {
+      std::fprintf(csv, "%zu,%s,%d,%d,%d,%d,%d,%d,%.6f,%.4f,%d", k, file.c_str(), rows.vertices[k],
+                   rows.faces[k], t.components, t.shells, t.genus, t.boundaries, t.area,
+                   t.areaRatio, t.nonManifoldEdges);
+      if (chosen)
+        std::fprintf(csv, ",%d,%.6f,%d,%d", chosen->persistentShells[k],
+                     restPose.empty() ? NAN : restPose[k], chosen->candidate[k],
+                     static_cast<int>(k) == chosen->chosen);
+      std::fprintf(csv, "\n");
+    }
+  }
+  if (csv && std::fclose(csv) != 0) throw UsageError{csvPath + ": write error"};
+}
+
 int runFrameTable(const Args& args, bool choose)
 {
   std::string input, csvPath;
@@ -72,14 +124,16 @@ int runFrameTable(const Args& args, bool choose)
   po::options_description options(std::string(name) + " options");
   options.add_options()("input", po::value(&input)->required(),
                         "folder, glob pattern, list file or mesh file")(
-      "min-shell-area", po::value(&selection.minimumShellArea)->default_value(0.1),
-      "components smaller than this (m^2) are not counted as body parts")(
+      "minimum-shell-area,min-shell-area",
+      po::value(&selection.minimumShellArea)->default_value(selection.minimumShellArea),
+      "components smaller than this (m^2) are not counted as body parts (also --min-shell-area)")(
       "csv", po::value(&csvPath), "also write the table as CSV to this file");
   if (choose)
-    options.add_options()("persistence", po::value(&selection.persistence)->default_value(3),
+    options.add_options()("persistence",
+                          po::value(&selection.persistence)->default_value(selection.persistence),
                           "a split counts only if it lasts this many consecutive frames")(
-        "template", po::value(&forced)->default_value(-1),
-        "use this frame (-1: choose automatically)")(
+        "template-frame,template", po::value(&forced)->default_value(-1),
+        "use this frame (-1: choose automatically; also --template)")(
         "template-criterion", po::value(&criterionName)->default_value(criterionName),
         "last criterion after the topology: rest-pose (fitted body closest to the rest pose; "
         "fits the body unless --body-fit is given) or area-ratio (the paper's)")(
@@ -96,8 +150,9 @@ int runFrameTable(const Args& args, bool choose)
     return 0;
   const FrameConventions conventions = toConventions(seq);
   if (selection.persistence < 1) throw UsageError{"--persistence must be at least 1"};
-  if (choose) selection.criterion = parseTemplateCriterion(criterionName);
-  const bool byPose = choose && forced < 0 && selection.criterion == TemplateCriterion::RestPose;
+  if (choose) selection.templateCriterion = parseTemplateCriterion(criterionName);
+  const bool byPose =
+      choose && forced < 0 && selection.templateCriterion == TemplateCriterion::RestPose;
 
   const std::vector<std::string> frames = listFrames(input);
   if (forced >= static_cast<int>(frames.size()))
@@ -130,43 +185,8 @@ int runFrameTable(const Args& args, bool choose)
     if (forced >= 0) chosen.chosen = forced;
   }
 
-  std::FILE* csv = nullptr;
-  if (!csvPath.empty() && !(csv = std::fopen(csvPath.c_str(), "w")))
-    throw UsageError{csvPath + ": cannot write file"};
-  if (csv)
-    std::fprintf(csv,
-                 "frame,file,vertices,faces,components,shells,genus_largest,boundaries_largest,"
-                 "area_largest_m2,"
-                 "area_ratio,non_manifold_edges%s\n",
-                 choose ? ",persistent_shells,rest_pose_distance,candidate,chosen" : "");
-  std::printf("%5s %-24s %8s %8s %5s %6s %5s %5s %8s %10s %4s%s\n", "frame", "file", "verts",
-              "faces", "comp", "shells", "genus", "holes", "area", "area_ratio", "nme",
-              choose ? "  persist  rest_pose cand" : "");
-  for (size_t k = 0; k < frames.size(); ++k)
-  {
-    const FrameTopology& t = criteria[k];
-    const std::string file = std::filesystem::path(frames[k]).filename().string();
-    std::printf("%5zu %-24.24s %8d %8d %5d %6d %5d %5d %8.4f %10.1f %4d", k, file.c_str(),
-                vertices[k], faces[k], t.components, t.shells, t.genus, t.boundaries, t.area,
-                t.areaRatio, t.nonManifoldEdges);
-    if (choose)
-      std::printf("  %7d %10.3f %4s%s", chosen.persistentShells[k],
-                  restPose.empty() ? NAN : restPose[k], chosen.candidate[k] ? "yes" : "",
-                  static_cast<int>(k) == chosen.chosen ? "  <- template" : "");
-    std::printf("\n");
-    if (csv)
-    {
-      std::fprintf(csv, "%zu,%s,%d,%d,%d,%d,%d,%d,%.6f,%.4f,%d", k, file.c_str(), vertices[k],
-                   faces[k], t.components, t.shells, t.genus, t.boundaries, t.area, t.areaRatio,
-                   t.nonManifoldEdges);
-      if (choose)
-        std::fprintf(csv, ",%d,%.6f,%d,%d", chosen.persistentShells[k],
-                     restPose.empty() ? NAN : restPose[k], chosen.candidate[k],
-                     static_cast<int>(k) == chosen.chosen);
-      std::fprintf(csv, "\n");
-    }
-  }
-  if (csv && std::fclose(csv) != 0) throw UsageError{csvPath + ": write error"};
+  printFrameTable(frames, {criteria, vertices, faces}, choose ? &chosen : nullptr, restPose,
+                  csvPath);
   if (choose)
     std::printf("template frame: %d (%s), %s%s\n", chosen.chosen,
                 std::filesystem::path(frames[chosen.chosen]).filename().string().c_str(),

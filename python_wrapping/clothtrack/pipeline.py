@@ -22,10 +22,12 @@ class Alignment:
                     median_vertex_error_m, p90_vertex_error_m, max_vertex_error_m, within_5cm,
                     within_10cm, worst_frame, drift_m_per_frame, per_frame_mean_error_m (from
                     ctAlignmentError: the template frame is left out of the pooled figures, as in
-                    the app)
+                    the app); always per_frame_confidence, per_frame_coverage_distance_m,
+                    per_frame_fit_attempts and doubtful_frames (frames with a confidence below 1;
+                    the fit stage warns about each)
     """
 
-    def __init__(self, aligned, template_frame, errors=None, frame_errors=None):
+    def __init__(self, aligned, template_frame, errors=None, frame_errors=None, fit_summary=None):
         self.aligned = aligned
         self.template_frame = template_frame
         self.positions = np.stack([numpy_support.vtk_to_numpy(a.GetPoints().GetData()) for a in aligned])
@@ -37,6 +39,14 @@ class Alignment:
             "template_frame": template_frame,
             "mean_surface_distance_m": float(np.mean([d.mean() for d in distances])),
         }
+        if fit_summary is not None:  # ctTemplateFit's per-frame table: each frame's confidence
+            def column(name):
+                return [fit_summary.GetValueByName(k, name).ToDouble() for k in range(fit_summary.GetNumberOfRows())]
+
+            self.metrics["per_frame_confidence"] = column("Confidence")
+            self.metrics["per_frame_coverage_distance_m"] = column("CoverageDistance")
+            self.metrics["per_frame_fit_attempts"] = [int(a) for a in column("Attempts")]
+            self.metrics["doubtful_frames"] = [k for k, c in enumerate(self.metrics["per_frame_confidence"]) if c < 1.0]
         if frame_errors is not None:  # ctAlignmentError's per-frame table and its sequence figures
             sequence = frame_errors.GetFieldData()
 
@@ -72,8 +82,32 @@ def _as_sequence(frames, frame_rate):
     return sequence
 
 
+# Keywords of align() that set a filter property of the same name (CamelCase); None keeps the
+# filter's default, which is the core's (docs/parameters.md).
+_STAGE_KEYWORDS = {
+    "body": ("samples", "temporal_weight", "outside_tolerance", "inside_tolerance"),
+    "correspondence": ("epsilon", "minimum_radius", "maximum_radius", "minimum_seed_consensus",
+                       "minimum_shell_area", "persistence"),
+    "fit": ("solver_tolerance", "intermediate_tolerance", "refactor_steps", "nearest_reuse",
+            "maximum_nearest_distance"),
+    "error": ("maximum_truth_distance",),
+}
+
+
+def _property_name(keyword):
+    return "".join(word.capitalize() for word in keyword.split("_"))
+
+
+def _set_stage_keywords(stage, algorithm, options):
+    for keyword in _STAGE_KEYWORDS[stage]:
+        value = options.pop(keyword, None)
+        if value is not None:
+            getattr(algorithm, "Set" + _property_name(keyword))(value)
+
+
 def align(frames, ground_truth=None, template_frame=None, solver="exact", predict_radius=0.3,
-          shape_frames=8, frame_rate=25.0, progress=None, template_criterion="rest-pose"):
+          shape_frames=8, frame_rate=25.0, progress=None, template_criterion="rest-pose",
+          threads=0, **options):
     """Aligns a captured sequence: body fit and landmarks, template choice, geodesic-patch
     correspondences, template fit and, with a ground truth, the vertex errors.
 
@@ -87,6 +121,10 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
     predict_radius  width (metres) of the landmark-driven start of each frame; 0 starts each frame
                     from its neighbour's fit unchanged, as the paper does
     progress        optional callable(stage_name, fraction) called as the stages advance
+    threads         threads of each stage (0: every core)
+    options         further parameters by their snake_case names (docs/parameters.md), e.g.
+                    epsilon=0.2, minimum_radius=0.05, minimum_shell_area=0.05, persistence=2,
+                    solver_tolerance=1e-5, maximum_truth_distance=0.05
 
     Returns an Alignment. Raises RuntimeError with the stage's message when a stage fails.
     """
@@ -96,14 +134,24 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
         raise ValueError("solver must be 'exact' or 'lbfgs'")
     if template_criterion not in ("rest-pose", "area-ratio"):
         raise ValueError("template_criterion must be 'rest-pose' or 'area-ratio'")
+    known = {keyword for keywords in _STAGE_KEYWORDS.values() for keyword in keywords}
+    unknown = sorted(set(options) - known)
+    if unknown:
+        raise TypeError("align() got unknown keyword(s) %s; known: %s" % (", ".join(unknown),
+                                                                          ", ".join(sorted(known))))
+    if threads < 0:
+        raise ValueError("threads must be 0 (every core) or more")
+    options = dict(options)
     sequence = _as_sequence(frames, frame_rate)
     body = clothtrack.ctBodyFit()
     body.SetInputData(sequence)
     body.SetShapeFrames(min(shape_frames, sequence.GetNumberOfBlocks()))
+    _set_stage_keywords("body", body, options)
     correspondence = clothtrack.ctPatchCorrespondence()
     correspondence.SetInputData(0, sequence)
     correspondence.SetInputConnection(1, body.GetOutputPort(1))
     correspondence.SetTemplateCriterion(1 if template_criterion == "rest-pose" else 0)
+    _set_stage_keywords("correspondence", correspondence, options)
     if template_frame is not None:
         if not 0 <= template_frame < sequence.GetNumberOfBlocks():
             raise ValueError("template_frame %d is not a frame (0..%d)" % (template_frame,
@@ -115,6 +163,9 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
     fit.SetInputConnection(2, body.GetOutputPort(1))
     fit.SetSolver(fit.LBFGS if solver == "lbfgs" else fit.EXACT)
     fit.SetPredictRadius(predict_radius)
+    _set_stage_keywords("fit", fit, options)
+    for algorithm in (body, correspondence, fit):
+        algorithm.SetNumberOfThreads(threads)
     last = fit
     if ground_truth is not None:
         truth = _as_sequence(ground_truth, frame_rate)
@@ -124,6 +175,7 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
         last = clothtrack.ctAlignmentError()
         last.SetInputConnection(0, fit.GetOutputPort(0))
         last.SetInputData(1, truth)
+        _set_stage_keywords("error", last, options)
 
     stages = {"body fit": body, "correspondence": correspondence, "template fit": fit}
     if last is not fit:
@@ -139,7 +191,8 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
 
     output = last.GetOutputDataObject(0)
     aligned = [output.GetBlock(k) for k in range(output.GetNumberOfBlocks())]
+    summary = fit.GetSummaryOutput()
     if last is fit:
-        return Alignment(aligned, correspondence.GetChosenFrame())
+        return Alignment(aligned, correspondence.GetChosenFrame(), fit_summary=summary)
     errors = np.stack([numpy_support.vtk_to_numpy(a.GetPointData().GetArray("Error")) for a in aligned])
-    return Alignment(aligned, correspondence.GetChosenFrame(), errors, last.GetFrameErrorOutput())
+    return Alignment(aligned, correspondence.GetChosenFrame(), errors, last.GetFrameErrorOutput(), summary)

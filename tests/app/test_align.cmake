@@ -64,6 +64,17 @@ if (mean GREATER 0.04 OR within10 LESS 0.95 OR NOT rss GREATER 10 OR NOT fit_sec
   message(FATAL_ERROR "metrics.json: mean error ${mean} m, within 10 cm ${within10}, rss ${rss}, fit ${fit_seconds} s")
 endif ()
 
+# Every frame is judged without the truth; this accurate result has no doubtful frame.
+string(JSON confidence_count LENGTH "${metrics}" per_frame_confidence)
+string(JSON doubtful_count LENGTH "${metrics}" doubtful_frames)
+string(JSON attempts_count LENGTH "${metrics}" per_frame_fit_attempts)
+read_metric(confidence0 per_frame_confidence 0)
+if (NOT confidence_count EQUAL 6 OR NOT attempts_count EQUAL 6 OR NOT doubtful_count EQUAL 0
+    OR NOT confidence0 EQUAL 1)
+  message(FATAL_ERROR "metrics.json: ${confidence_count} confidences (frame 0: ${confidence0}), "
+                      "${doubtful_count} doubtful frames")
+endif ()
+
 # eval recomputes the errors of the folder from its aligned frames: the same figures.
 expect_run(0 "evaluated 6 frames" eval ${WORK}/out --ground-truth ${WORK}/synth/ground_truth
   --markers ${WORK}/synth/markers.csv)
@@ -146,7 +157,7 @@ expect_run(1 "selects no frame" align ${WORK}/synth/frames --frames 4:2 -o ${WOR
 expect_run(1 "--solver-tolerance and --intermediate-tolerance must be in (0, 1)" align ${WORK}/synth/frames -o ${WORK}/x --intermediate-tolerance 0)
 expect_run(1 "--refactor-steps must be 0 or more" align ${WORK}/synth/frames -o ${WORK}/x --refactor-steps -1)
 expect_run(1 "--nearest-reuse must be 0 or more" align ${WORK}/synth/frames -o ${WORK}/x --nearest-reuse -0.001)
-expect_run(1 "--seed-consensus must be between 0 and 1" align ${WORK}/synth/frames -o ${WORK}/x --seed-consensus 1.5)
+expect_run(1 "--minimum-seed-consensus must be between 0 and 1" align ${WORK}/synth/frames -o ${WORK}/x --seed-consensus 1.5)
 expect_run(1 "--factor-backend must be block or cholmod" align ${WORK}/synth/frames -o ${WORK}/x --factor-backend dense)
 expect_run(1 "--persistence must be at least 1" align ${WORK}/synth/frames -o ${WORK}/x --persistence 0)
 # Aligned frames are written in the background: a failed write still ends the run with its error.

@@ -66,6 +66,7 @@ expect_run(1 "unknown preset 'kilt-jog'" synth --preset kilt-jog -o ${WORK}/synt
 # select-template on the synthetic capture: a table and a chosen frame.
 expect_run(0 "template frame:" select-template ${WORK}/synth/frames --persistence 1 --csv ${WORK}/criteria.csv)
 expect_run(0 "template frame: 1 (frame_0001.obj), set by --template" select-template ${WORK}/synth/frames --template 1)
+expect_run(0 "template frame: 2 (frame_0002.obj), set by --template" select-template ${WORK}/synth/frames --template-frame 2 --minimum-shell-area 0.05)
 expect_run(1 "--template 7 is out of range" select-template ${WORK}/synth/frames --template 7)
 expect_run(1 "--template-criterion must be rest-pose or area-ratio" select-template ${WORK}/synth/frames --template-criterion tallest)
 expect_run(0 "chosen by area-ratio" select-template ${WORK}/synth/frames --template-criterion area-ratio)

@@ -157,7 +157,7 @@ TEST(PatchCorrespondence, MissingLandmarksAndSmallPatches)
   EXPECT_GT(patches.correspond(sphere, templateLandmarks).matchedFraction(), 0.2);
   // tau_s above tau_d: every patch is too small and discarded.
   PatchCorrespondenceOptions options;
-  options.minRadius = 0.3;
+  options.minimumRadius = 0.3;
   const TemplatePatches tooSmall(sphere, templateLandmarks, options);
   EXPECT_EQ(tooSmall.correspond(sphere, templateLandmarks).matchedFraction(), 0.0);
 }
@@ -198,7 +198,7 @@ TEST(PatchCorrespondence, SeedConsensusDropsAMisplacedLandmark)
   };
 
   PatchCorrespondenceOptions noVote;
-  noVote.minConsensus = 0;
+  noVote.minimumSeedConsensus = 0;
   const FrameCorrespondence trusting =
       TemplatePatches(sphere, templateLandmarks, noVote).correspond(copy.mesh, frameLandmarks);
   ASSERT_TRUE(trusting.patches[0].kept);

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 
 using namespace clothtrack;
@@ -159,6 +160,52 @@ TEST(TemplateFit, SequenceStartsEachFrameFromItsNeighbour)
   EXPECT_EQ((fits[2].positions - frames[2].V).norm(), 0.0);
 }
 
+TEST(TemplateFit, ADoubtfulFrameIsFittedAgainFromOtherStarts)
+{
+  // Steps of 5 cm; the start prediction throws frame 2 half a metre off, out of the nearest
+  // points' reach, so its first fit stays there.
+  const TriangleMesh t = limb();
+  std::vector<TriangleMesh> frames;
+  for (int k = 0; k < 4; ++k) frames.push_back(moved(t, 0.0, Vec3(0.05 * k, 0.0, 0.0)));
+  SequenceFitHooks hooks;
+  hooks.frame = [&](int k) -> const TriangleMesh& { return frames[k]; };
+  hooks.start = [](int k, int, const Points& fit) -> Points
+  {
+    Points start = fit;
+    if (k == 2) start.col(0).array() += 0.5;
+    return start;
+  };
+  const auto trusting = fitTemplateSequence(frames[0], 0, 4, hooks);
+  EXPECT_GT(trusting[2].surfaceDistance.mean(), 0.1);
+  EXPECT_EQ(trusting[2].attempts, 1);
+  // A judge that doubts fits lying off the frame: frame 2 is fitted again from its neighbour's
+  // fit, which is kept; the other frames are fitted once.
+  std::atomic<int> judged{0};
+  hooks.judge = [&](int, const TriangleMesh&, const FrameFit& fit)
+  {
+    ++judged;
+    return fit.surfaceDistance.mean() / 0.01;
+  };
+  const auto judged2 = fitTemplateSequence(frames[0], 0, 4, hooks);
+  EXPECT_EQ(judged.load(), 4); // frames 1, 2 (twice) and 3
+  EXPECT_EQ(judged2[2].attempts, 2);
+  EXPECT_EQ(judged2[2].recovery, "the neighbour's fit as start");
+  EXPECT_LT(judged2[2].surfaceDistance.mean(), 0.005);
+  EXPECT_LE(judged2[2].doubt, 1.0);
+  EXPECT_LT(meanError(judged2[3].positions, frames[3].V), 0.03);
+  for (int k : {1, 3})
+  {
+    EXPECT_EQ(judged2[k].attempts, 1) << k;
+    EXPECT_TRUE(judged2[k].recovery.empty()) << k;
+  }
+  EXPECT_EQ((judged2[1].positions - trusting[1].positions).norm(), 0.0);
+  // Past retryAbove only: the same doubt is kept when the bar is higher.
+  hooks.retryAbove = 1e6;
+  const auto barred = fitTemplateSequence(frames[0], 0, 4, hooks);
+  EXPECT_EQ(barred[2].attempts, 1);
+  EXPECT_GT(barred[2].doubt, 1.0);
+}
+
 TEST(TemplateFit, LengthScaleIsTheUnitOfTheEnergy)
 {
   // The same scene a tenth the size, with lengths multiplied by 10 in the energy (and the
@@ -170,7 +217,7 @@ TEST(TemplateFit, LengthScaleIsTheUnitOfTheEnergy)
   metres.solverTolerance = 1e-10;
   TemplateFitOptions scaled = metres;
   scaled.lengthScale = 10.0;
-  scaled.maxNearestDistance = metres.maxNearestDistance / 10;
+  scaled.maximumNearestDistance = metres.maximumNearestDistance / 10;
   scaled.convergence = metres.convergence / 10;
   scaled.nearestReuse = metres.nearestReuse / 10;
   TriangleMesh small = t, smallFrame = frame;

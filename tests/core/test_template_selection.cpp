@@ -60,13 +60,13 @@ TEST(TemplateSelection, RestPoseAmongTheTopologicalCandidates)
   // Frame 4's pose is unknown (failed fit): it ranks after every known pose.
   EXPECT_NE(s.chosen, 4);
 
-  options.criterion = TemplateCriterion::AreaRatio;
+  options.templateCriterion = TemplateCriterion::AreaRatio;
   s = selectTemplate(frames, options, pose);
   EXPECT_EQ(s.decidedBy, TemplateCriterion::AreaRatio);
   EXPECT_EQ(s.chosen, 4);
 
   // No pose known for any candidate: the area ratio decides.
-  options.criterion = TemplateCriterion::RestPose;
+  options.templateCriterion = TemplateCriterion::RestPose;
   s = selectTemplate(frames, options, {NAN, 0.1, NAN, NAN, NAN});
   EXPECT_EQ(s.decidedBy, TemplateCriterion::AreaRatio);
   EXPECT_EQ(s.chosen, 4);

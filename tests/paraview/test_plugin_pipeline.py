@@ -101,7 +101,7 @@ print("template by pose: frame %d (rest-pose distances %s)" % (by_pose, ["%.2f" 
 check(by_pose == chosen, "Template Selection chose %d, Patch Correspondence %d" % (by_pose, chosen))
 candidates = [d for k, d in enumerate(distances) if table.GetValueByName(k, "Candidate").ToInt()]
 check(distances[chosen] == min(candidates), "the chosen frame is not the candidate nearest the rest pose")
-selection.Criterion = "Area ratio"
+selection.TemplateCriterion = "Area ratio"
 selection.UpdatePipeline()
 table = selection.GetClientSideObject().GetOutputDataObject(1)
 ratios = [table.GetValueByName(k, "AreaRatio").ToDouble() for k in range(table.GetNumberOfRows())]

@@ -44,6 +44,10 @@ class AlignTest(unittest.TestCase):
         self.assertGreater(m["within_10cm"], 0.97)
         self.assertLess(m["mean_surface_distance_m"], 0.01)
         self.assertEqual(len(m["per_frame_mean_error_m"]), FRAMES)
+        # Each frame judged without the truth: an accurate result is not doubtful.
+        self.assertEqual(len(m["per_frame_confidence"]), FRAMES)
+        self.assertEqual(m["doubtful_frames"], [])
+        self.assertEqual(m["per_frame_fit_attempts"], [1] * FRAMES)
         others = np.delete(result.errors, result.template_frame, axis=0)
         self.assertAlmostEqual(m["mean_vertex_error_m"], np.nanmean(others), places=9)
         # At the template frame only the capture's own deviation from the truth remains (measured 0.6 cm
@@ -61,6 +65,16 @@ class AlignTest(unittest.TestCase):
         self.assertIsNone(result.errors)
         self.assertNotIn("mean_vertex_error_m", result.metrics)
         self.assertLess(result.metrics["mean_surface_distance_m"], 0.02)
+
+    def test_parameters_by_name_reach_their_stage(self):
+        frames = clothtrack.read_sequence(os.path.join(self.data, "frames"))[:3]
+        base = clothtrack.align(frames, template_frame=1, shape_frames=2, threads=1)
+        # Patches must reach 5 m: none is kept, so no vertex has a correspondence and the fit
+        # follows the nearest points alone.
+        unmatched = clothtrack.align(frames, template_frame=1, shape_frames=2, threads=2, minimum_radius=5.0)
+        self.assertGreater(np.abs(unmatched.positions - base.positions).max(), 1e-4)
+        used = [a.GetPointData().GetArray("CorrespondenceUsed") for a in unmatched.aligned]
+        self.assertEqual(sum(u.GetRange()[1] for k, u in enumerate(used) if k != 1), 0)
 
     def test_the_examples_run(self):
         examples = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python_wrapping", "examples")
@@ -89,6 +103,10 @@ class AlignTest(unittest.TestCase):
             clothtrack.align(frames, template_frame=7)
         with self.assertRaisesRegex(ValueError, "solver"):
             clothtrack.align(frames, solver="newton")
+        with self.assertRaisesRegex(TypeError, "unknown keyword.*min_radius"):
+            clothtrack.align(frames, min_radius=0.05)
+        with self.assertRaisesRegex(ValueError, "threads"):
+            clothtrack.align(frames, threads=-1)
         with self.assertRaisesRegex(ValueError, "ground truth has 3 frames"):
             clothtrack.align(frames, ground_truth=frames[:3])
 

@@ -182,13 +182,13 @@ TEST(TemplateSelectionFilter, RestPoseFromTheBodyFitDecidesAmongCandidates)
   EXPECT_TRUE(std::isnan(table->GetValueByName(3, "RestPoseDistance").ToDouble()));
 
   // The paper's criterion ignores the poses.
-  selection->SetCriterion(0);
+  selection->SetTemplateCriterion(0);
   selection->Update();
   EXPECT_EQ(selection->GetChosenFrame(), byArea);
 
   // A body fit of another length is an error.
   bodies->SetNumberOfBlocks(3);
-  selection->SetCriterion(1);
+  selection->SetTemplateCriterion(1);
   selection->GlobalWarningDisplayOff();
   selection->Update();
   selection->GlobalWarningDisplayOn();

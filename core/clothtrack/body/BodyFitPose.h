@@ -1,5 +1,6 @@
 #pragma once
-// The pose as the body fit's parameter vector, and the priors on it. Internal to the body fit (BodyFit.cpp).
+// The pose as the body fit's parameter vector, and the priors on it. Internal to the body fit
+// (BodyFit.cpp).
 #include "BodyFit.h"
 
 #include <array>
@@ -9,11 +10,10 @@ namespace clothtrack::bodyfit
 {
 inline constexpr int kNumExtremities = 5;
 /// The joint each extremity hangs from: it cannot be further from it than in the rest pose.
-inline constexpr std::array<int, kNumExtremities> kExtremityRoots = {Neck, LeftShoulder, RightShoulder,
-                                                              LeftHip, RightHip};
+inline constexpr std::array<int, kNumExtremities> kExtremityRoots = {
+    Neck, LeftShoulder, RightShoulder, LeftHip, RightHip};
 inline constexpr int kPoseParameters = NumJoints * 3 + 3;
 inline constexpr double kStep = 1e-5; // finite-difference step (radians, metres, beta units)
-
 
 /// Prior weight of each rotation parameter (x, y, z about the rest-pose axes; y is the twist
 /// of a limb pointing down). Joints get the stiffness of their anatomy: knees are hinges, hips

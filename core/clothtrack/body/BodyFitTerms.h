@@ -1,5 +1,6 @@
 #pragma once
-// The frame side of the body fit's energy: closest points, their residuals, extremity pairs. Internal to the body fit (BodyFit.cpp).
+// The frame side of the body fit's energy: closest points, their residuals, extremity pairs.
+// Internal to the body fit (BodyFit.cpp).
 #include "BodySamples.h"
 #include "Extremities.h"
 
@@ -131,9 +132,9 @@ struct Assignments
 /// the gate and within reach of the joint the extremity hangs from (a hand cannot be further
 /// from its shoulder than the arm is long): tips of cloth folds or of merged parts are left out.
 inline void matchExtremities(const Points& p, const BodySamples& samples,
-                      const std::array<Vec3, kNumExtremities>& roots,
-                      const std::vector<Vec3>& detected, double gate, double handGate,
-                      std::array<int, 5>& match)
+                             const std::array<Vec3, kNumExtremities>& roots,
+                             const std::vector<Vec3>& detected, double gate, double handGate,
+                             std::array<int, 5>& match)
 {
   match.fill(-1);
   std::array<int, 5> current;

@@ -1,5 +1,6 @@
 #pragma once
-// The body fit's minimisation (Levenberg-Marquardt on poses and shape) over a sequence. Internal to the body fit (BodyFit.cpp).
+// The body fit's minimisation (Levenberg-Marquardt on poses and shape) over a sequence. Internal to
+// the body fit (BodyFit.cpp).
 #include "BodyFitTerms.h"
 
 #include <clothtrack/base/Error.h>

@@ -195,7 +195,7 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
     : mesh_(templateMesh), options_(options)
 {
   if (templateMesh.numFaces() == 0) throw Error("patch correspondence: the template is empty");
-  if (!(options.maxRadius > 0) || !(options.epsilon > 0) || options.minRadius < 0)
+  if (!(options.maximumRadius > 0) || !(options.epsilon > 0) || options.minimumRadius < 0)
     throw Error("patch correspondence: radii and tolerance must be positive");
   for (const auto& l : landmarks) checkLandmark(templateMesh, l, "template");
   const ExponentialMapper mapper(templateMesh);
@@ -206,7 +206,7 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
       {
         auto patch = std::make_unique<Patch>();
         patch->landmark = landmarks[i];
-        if (std::abs(landmarks[i].offset) > options_.maxSeedOffset)
+        if (std::abs(landmarks[i].offset) > options_.maximumSeedOffset)
         {
           patches_[i] = std::move(patch); // seeds nothing: no disc
           return;
@@ -214,7 +214,7 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
         try
         {
           patch->disc = mapper.map(landmarks[i].face, landmarks[i].bary, landmarks[i].direction,
-                                   options_.maxRadius);
+                                   options_.maximumRadius);
         }
         catch (const Error&)
         {
@@ -240,22 +240,22 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
           if (it != local.end()) patch->start.push_back(it->second);
         }
         // Anchors: around the seed at half the radius, evenly in angle.
-        for (int a = 0; a < options_.anchors && n > 0; ++a)
+        for (int a = 0; a < options_.numberOfAnchors && n > 0; ++a)
         {
-          const double angle = 2.0 * M_PI * a / options_.anchors;
+          const double angle = 2.0 * M_PI * a / options_.numberOfAnchors;
           const Eigen::Vector2d target =
-              0.5 * options_.maxRadius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+              0.5 * options_.maximumRadius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
           int best = -1;
           for (int k = 0; k < n; ++k)
             if (best < 0 ||
                 (disc.coordinates[k] - target).norm() < (disc.coordinates[best] - target).norm())
               best = k;
-          if ((disc.coordinates[best] - target).norm() > 0.25 * options_.maxRadius) continue;
+          if ((disc.coordinates[best] - target).norm() > 0.25 * options_.maximumRadius) continue;
           if (std::find(patch->anchors.begin(), patch->anchors.end(), best) != patch->anchors.end())
             continue;
           std::vector<int> reached;
           const Eigen::VectorXd d = mapper.geodesic().distancesFromSeeds(
-              {{disc.vertices[best], 0.0}}, 2.0 * options_.maxRadius, reached);
+              {{disc.vertices[best], 0.0}}, 2.0 * options_.maximumRadius, reached);
           std::vector<double> onDisc(n);
           for (int k = 0; k < n; ++k) onDisc[k] = d[disc.vertices[k]];
           patch->anchors.push_back(best);
@@ -266,14 +266,14 @@ TemplatePatches::TemplatePatches(const TriangleMesh& templateMesh,
       1);
   const int m = static_cast<int>(landmarks.size());
   seedDistances_ = Eigen::MatrixXd::Constant(m, m, kInf);
-  if (options_.minConsensus > 0)
+  if (options_.minimumSeedConsensus > 0)
     parallelFor(0, m,
                 [&](int i)
                 {
                   std::vector<int> reached;
                   const Eigen::VectorXd d = mapper.geodesic().distancesFromSeeds(
                       seedsAtSurfacePoint(templateMesh, landmarks[i].face, landmarks[i].bary),
-                      options_.consensusRadius, reached);
+                      options_.seedConsensusRadius, reached);
                   for (int j = 0; j < m; ++j)
                     seedDistances_(i, j) =
                         distanceAt(templateMesh, d, landmarks[j].face, landmarks[j].bary);
@@ -284,7 +284,7 @@ TemplatePatches::~TemplatePatches() = default;
 
 double TemplatePatches::seedFieldReach() const
 {
-  return options_.chartMargin * options_.maxRadius + options_.epsilon;
+  return options_.chartMargin * options_.maximumRadius + options_.epsilon;
 }
 
 void TemplatePatches::voteOnSeeds(const TriangleMesh& frame, const ExponentialMapper& mapper,
@@ -297,8 +297,9 @@ void TemplatePatches::voteOnSeeds(const TriangleMesh& frame, const ExponentialMa
   // the voting reach every pair disagrees, so a field reaching further (for the patch) gives the
   // same votes.
   const double reach =
-      std::max(seedFieldReach(), options_.consensusRadius * (1.0 + options_.consensusRelative) +
-                                     options_.consensusTolerance);
+      std::max(seedFieldReach(),
+               options_.seedConsensusRadius * (1.0 + options_.seedConsensusRelativeTolerance) +
+                   options_.seedConsensusTolerance);
   Eigen::MatrixXd agree = Eigen::MatrixXd::Zero(m, m); // 1 agree, 0 disagree, -1 no vote
   parallelFor(
       0, m,
@@ -315,8 +316,8 @@ void TemplatePatches::voteOnSeeds(const TriangleMesh& frame, const ExponentialMa
           const double dT = seedDistances_(i, j);
           if (j == i || !images[j] || !std::isfinite(dT)) continue;
           const double dS = distanceAt(frame, d, images[j]->face, images[j]->bary);
-          agree(j, i) =
-              std::abs(dS - dT) <= options_.consensusTolerance + options_.consensusRelative * dT;
+          agree(j, i) = std::abs(dS - dT) <= options_.seedConsensusTolerance +
+                                                 options_.seedConsensusRelativeTolerance * dT;
         }
       },
       1);
@@ -339,7 +340,7 @@ void TemplatePatches::voteOnSeeds(const TriangleMesh& frame, const ExponentialMa
       for (int j = 0; j < m; ++j)
         if (active[j] && agree(i, j) >= 0) ++voters, agreeing += agree(i, j) > 0;
       summaries[i].consensus = voters ? static_cast<double>(agreeing) / voters : -1.0;
-      if (voters >= 3 && summaries[i].consensus < options_.minConsensus &&
+      if (voters >= 3 && summaries[i].consensus < options_.minimumSeedConsensus &&
           (worst < 0 || summaries[i].consensus < summaries[worst].consensus))
         worst = i;
     }
@@ -372,12 +373,13 @@ TemplatePatches::correspond(const TriangleMesh& frame,
     const auto image = std::find_if(frameLandmarks.begin(), frameLandmarks.end(),
                                     [&](const OrientedSurfacePoint& l)
                                     { return l.id == patches_[i]->landmark.id; });
-    if (image != frameLandmarks.end() && std::abs(image->offset) <= options_.maxSeedOffset &&
-        std::abs(patches_[i]->landmark.offset) <= options_.maxSeedOffset)
+    if (image != frameLandmarks.end() && std::abs(image->offset) <= options_.maximumSeedOffset &&
+        std::abs(patches_[i]->landmark.offset) <= options_.maximumSeedOffset)
       images[i] = &*image;
   }
   std::vector<Eigen::VectorXd> seedFields(m);
-  if (options_.minConsensus > 0) voteOnSeeds(frame, mapper, images, result.patches, seedFields);
+  if (options_.minimumSeedConsensus > 0)
+    voteOnSeeds(frame, mapper, images, result.patches, seedFields);
   parallelFor(
       0, static_cast<int>(patches_.size()),
       [&](int i)
@@ -392,7 +394,7 @@ TemplatePatches::correspond(const TriangleMesh& frame,
         try
         {
           chart = mapper.map(image->face, image->bary, image->direction,
-                             options_.chartMargin * options_.maxRadius);
+                             options_.chartMargin * options_.maximumRadius);
         }
         catch (const Error&)
         {
@@ -430,7 +432,7 @@ TemplatePatches::correspond(const TriangleMesh& frame,
           if (!consistent[anchor]) continue;
           const Eigen::VectorXd d = mapper.geodesic().distancesFromSeeds(
               seedsAtSurfacePoint(frame, face[anchor], bary[anchor]),
-              2.0 * options_.maxRadius + eps, reached);
+              2.0 * options_.maximumRadius + eps, reached);
           for (int k = 0; k < n; ++k)
             if (consistent[k] && std::isfinite(patch.anchorDistances[a][k]) &&
                 !(std::abs(distanceAt(frame, d, face[k], bary[k]) - patch.anchorDistances[a][k]) <=
@@ -452,7 +454,7 @@ TemplatePatches::correspond(const TriangleMesh& frame,
           ++summary.vertices;
           summary.radius = std::max(summary.radius, patch.disc.distances[k]);
         }
-        summary.kept = summary.vertices > 0 && summary.radius >= options_.minRadius;
+        summary.kept = summary.vertices > 0 && summary.radius >= options_.minimumRadius;
         if (!summary.kept) return;
         for (int k = 0; k < n; ++k)
           if (accepted[k])

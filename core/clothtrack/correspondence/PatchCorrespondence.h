@@ -22,28 +22,29 @@ namespace clothtrack
 {
 struct PatchCorrespondenceOptions
 {
-  double epsilon = 0.25;    ///< near-isometry tolerance eps, metres
-  double minRadius = 0.1;   ///< tau_s: smaller patches are discarded, metres
-  double maxRadius = 0.25;  ///< tau_d: intrinsic radius where growth stops, metres
-  int anchors = 6;          ///< points checked besides the seed, around each patch
-  double chartMargin = 1.3; ///< the frame's chart reaches this times tau_d (stretching cloth)
+  double epsilon = 0.25;       ///< near-isometry tolerance eps, metres
+  double minimumRadius = 0.1;  ///< tau_s: smaller patches are discarded, metres
+  double maximumRadius = 0.25; ///< tau_d: intrinsic radius where growth stops, metres
+  int numberOfAnchors = 6;     ///< points checked besides the seed, around each patch
+  double chartMargin = 1.3;    ///< the frame's chart reaches this times tau_d (stretching cloth)
   /// Assignments of one vertex closer than this to their medoid are averaged; further ones are
   /// outliers of the merge (metres).
   double agreement = 0.05;
   /// Landmarks further than this from the body (|offset|, metres) seed no patch: loose cloth
   /// slides over the body, so a body landmark carried onto it is not the same cloth point from
   /// one frame to the next.
-  double maxSeedOffset = 0.03;
+  double maximumSeedOffset = 0.03;
   /// Seed consensus. A body landmark misplaced on a frame (an arm posed wrongly under the
   /// clothing) gives a patch that passes the near-isometry test yet is shifted as a whole. Two
   /// seed pairs agree when their geodesic distance on the frame is that on the template within
-  /// consensusTolerance + consensusRelative * distance; the other seeds within consensusRadius
-  /// of a seed on the template vote, and a seed that agrees with less than minConsensus of at
-  /// least 3 voters grows no patch (minConsensus 0: every seed grows).
-  double minConsensus = 0.7;
-  double consensusRadius = 1.0;     ///< metres
-  double consensusTolerance = 0.03; ///< metres
-  double consensusRelative = 0.08;
+  /// seedConsensusTolerance + seedConsensusRelativeTolerance * distance; the other seeds within
+  /// seedConsensusRadius of a seed on the template vote, and a seed that agrees with less than
+  /// minimumSeedConsensus of at least 3 voters grows no patch (minimumSeedConsensus 0: every seed
+  /// grows).
+  double minimumSeedConsensus = 0.7;
+  double seedConsensusRadius = 1.0;     ///< metres
+  double seedConsensusTolerance = 0.03; ///< metres
+  double seedConsensusRelativeTolerance = 0.08;
 };
 
 struct PatchSummary
@@ -54,7 +55,7 @@ struct PatchSummary
   int inconsistent = 0;    ///< disc vertices that failed the near-isometry test
   bool kept = false;       ///< radius >= tau_s
   double consensus = -1.0; ///< share of the voting seeds it agrees with (-1: no vote)
-  bool outvoted = false;   ///< consensus below minConsensus: the seed grew no patch
+  bool outvoted = false;   ///< consensus below minimumSeedConsensus: the seed grew no patch
 };
 
 /// Where one template vertex goes on the frame.
@@ -98,8 +99,8 @@ public:
 
 private:
   struct Patch;
-  /// Marks the seeds outvoted by the geodesic distances between the seeds (minConsensus). The
-  /// distance field from each seed's image, which reaches at least as far as a patch's, goes to
+  /// Marks the seeds outvoted by the geodesic distances between the seeds (minimumSeedConsensus).
+  /// The distance field from each seed's image, which reaches at least as far as a patch's, goes to
   /// `fields` (one slot per seed) for the patch to reuse.
   void voteOnSeeds(const TriangleMesh& frame, const ExponentialMapper& mapper,
                    const std::vector<const OrientedSurfacePoint*>& images,
@@ -110,7 +111,7 @@ private:
   const TriangleMesh& mesh_;
   PatchCorrespondenceOptions options_;
   std::vector<std::unique_ptr<Patch>> patches_;
-  /// Geodesic distances between the template's seeds (within consensusRadius; else infinite).
+  /// Geodesic distances between the template's seeds (within seedConsensusRadius; else infinite).
   Eigen::MatrixXd seedDistances_;
 };
 

@@ -19,10 +19,17 @@ struct TruthAnchors
   int count() const;        ///< vertices with ground truth
 };
 
+struct TruthAnchorOptions
+{
+  /// Template vertices further than this from the ground truth at the template frame have no
+  /// error (metres): e.g. surface a capture made up between the legs.
+  double maximumTruthDistance = 0.03;
+};
+
 /// Ties every template vertex to the closest point of `truthAtTemplate`; vertices further than
 /// `maxDistance` (metres) have no ground truth, e.g. surface a capture made up between the legs.
 TruthAnchors anchorToTruth(const Points& templateVertices, const TriangleMesh& truthAtTemplate,
-                           double maxDistance = 0.03);
+                           double maxDistance = TruthAnchorOptions{}.maximumTruthDistance);
 
 /// Per-vertex error of `aligned` (the template's vertices in frame k) against `truthFrame`
 /// (ground truth of frame k, same connectivity as the anchors' mesh); NaN without ground truth.

@@ -2,6 +2,8 @@
 // How well an aligned sequence follows its frames without a ground truth: the distance from the
 // aligned template to each frame's surface, from each frame to the aligned template (coverage:
 // a frame the template misses shows here, not in the first), and the jitter of the motion.
+#include "FrameConfidence.h"
+
 #include <clothtrack/mesh/TriangleMesh.h>
 
 #include <vector>
@@ -15,12 +17,19 @@ struct SequenceQuality
   /// Per inner frame k (1 .. N-2): mean |x(k+1) - 2 x(k) + x(k-1)| over the template vertices.
   std::vector<double> jitter;
   double meanSurfaceDistance = 0, meanCoverageDistance = 0, meanJitter = 0;
+  /// Per frame: the measures above with the distortion from the template frame, and whether
+  /// the frame is doubtful (FrameConfidence.h). Empty without a template frame.
+  std::vector<FrameConfidence> confidence;
+  std::vector<int> doubtfulFrames; ///< frames whose confidence has a doubt, in order
 };
 
 /// `*aligned[k]`: the template's vertices (connectivity `templateFaces`) in frame k.
 /// `knownSurfaceDistance[k]`, when not negative, is frame k's surface distance as the fit
-/// already measured it (the list may be empty).
-SequenceQuality sequenceQuality(const std::vector<const Points*>& aligned, const Triangles& templateFaces,
+/// already measured it (the list may be empty). With `templateFrame` (>= 0), each frame's
+/// confidence is judged too, its distortion measured from the template frame.
+SequenceQuality sequenceQuality(const std::vector<const Points*>& aligned,
+                                const Triangles& templateFaces,
                                 const std::vector<const TriangleMesh*>& frames,
-                                const std::vector<double>& knownSurfaceDistance = {});
+                                const std::vector<double>& knownSurfaceDistance = {},
+                                int templateFrame = -1, const FrameConfidenceOptions& options = {});
 } // namespace clothtrack

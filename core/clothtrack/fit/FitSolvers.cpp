@@ -33,8 +33,7 @@ int conjugateGradients(const Quadratic& q, const PreconditionerFactor& factor, d
                      [&](long from, long to)
                      {
                        Span rk(r.data() + from, to - from);
-                       Span(X.data() + from, to - from) +=
-                           alpha * Span(p.data() + from, to - from);
+                       Span(X.data() + from, to - from) += alpha * Span(p.data() + from, to - from);
                        rk -= alpha * Span(Hp.data() + from, to - from);
                        return rk.squaredNorm();
                      });

@@ -21,11 +21,19 @@ void pairLandmarks(const TriangleMesh& a, const std::vector<OrientedSurfacePoint
                    std::vector<Vec3>& before, std::vector<Vec3>& after,
                    double maxOffset = std::numeric_limits<double>::infinity());
 
+struct StartPredictionOptions
+{
+  /// Gaussian width (metres) of the locally rigid landmark motion that moves the neighbour's
+  /// fit to a frame's start; 0 starts from the neighbour's fit as it is.
+  double predictRadius = 0.3;
+};
+
 /// Moves `points` by the locally weighted rigid motion taking `before` to `after` (paired
 /// landmark positions, same order). `radius` (metres) is the Gaussian width of the weights.
 /// Fewer than three pairs: a translation by their mean motion (none without pairs).
 Points predictMotion(const Points& points, const std::vector<Vec3>& before,
-                     const std::vector<Vec3>& after, double radius = 0.3);
+                     const std::vector<Vec3>& after,
+                     double radius = StartPredictionOptions{}.predictRadius);
 
 /// The start of each frame of a sequence fit: the neighbour's fit moved by the motion of the
 /// landmarks seen on both frames (pairLandmarks, predictMotion over `radius`). `frames` and

@@ -45,7 +45,51 @@ struct Chains
     TriangleMesh frame;
     std::optional<VertexTargets> targets;
     Points start;
+    Points neighbour; ///< the neighbour's fit, when the start was predicted from it
   };
+
+  /// Fits frame k from `in`; with a judge, a doubtful fit is tried again from other starts and
+  /// the best judged one kept.
+  FrameFit fitFrame(const TemplateFitter& fitter, int k, const Inputs& in) const
+  {
+    const ThreadBudget budget(std::max(1, threads / runningChains.load()));
+    const VertexTargets* targets = in.targets ? &*in.targets : nullptr;
+    FrameFit best = fitter.fit(in.start, in.frame, targets);
+    if (!hooks.judge) return best;
+    best.doubt = hooks.judge(k, in.frame, best);
+    struct Alternative
+    {
+      const char* name;
+      const Points* start;
+      bool withTargets;
+    };
+    const bool predicted = in.neighbour.rows() > 0;
+    const Alternative alternatives[] = {
+        {"the neighbour's fit as start", predicted ? &in.neighbour : nullptr, true},
+        {"nearest points alone", targets ? &in.start : nullptr, false},
+        {"the neighbour's fit, nearest points alone",
+         predicted && targets ? &in.neighbour : nullptr, false}};
+    int attempts = 1;
+    double seconds = best.seconds;
+    for (const Alternative& alternative : alternatives)
+    {
+      if (!(best.doubt > std::max(1.0, hooks.retryAbove))) break;
+      if (!alternative.start) continue;
+      FrameFit other =
+          fitter.fit(*alternative.start, in.frame, alternative.withTargets ? targets : nullptr);
+      ++attempts;
+      seconds += other.seconds;
+      other.doubt = hooks.judge(k, in.frame, other);
+      if (other.doubt < best.doubt)
+      {
+        best = std::move(other);
+        best.recovery = alternative.name;
+      }
+    }
+    best.attempts = attempts;
+    best.seconds = seconds; // every attempt's
+    return best;
+  }
 
   /// Takes an earlier run's result for frame k; false when there is none.
   bool resume(int k)
@@ -90,12 +134,12 @@ struct Chains
             if (const VertexTargets* t = hooks.targets(k)) in.targets = *t;
           in.start = hooks.start ? hooks.start(k, previous, fits[previous].positions)
                                  : fits[previous].positions;
+          if (hooks.start && hooks.judge) in.neighbour = fits[previous].positions;
         }
         FrameFit fit;
         try
         {
-          const ThreadBudget budget(std::max(1, threads / runningChains.load()));
-          fit = fitter.fit(in.start, in.frame, in.targets ? &*in.targets : nullptr);
+          fit = fitFrame(fitter, k, in);
         }
         catch (const Error& e)
         {

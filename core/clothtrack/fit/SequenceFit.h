@@ -34,6 +34,14 @@ struct SequenceFitHooks
   std::function<void(int k, const FrameFit& fit)> fitted;
   /// Fraction of the frames done; returning false cancels (Error thrown).
   StageProgress progress;
+  /// Judges the fit of frame k (e.g. judgeFits, pipeline/FitJudge.h): at most 1 is trusted.
+  /// A frame judged past retryAbove is fitted again from other starts (the neighbour's fit
+  /// without the start prediction; nearest points alone, without the correspondences, which
+  /// may be wrong) and the best judged fit is kept. Unlike the other hooks, the judge may run
+  /// in both chains at once.
+  std::function<double(int k, const TriangleMesh& frame, const FrameFit& fit)> judge;
+  /// A judged frame is fitted again when its doubt exceeds this (at least 1).
+  double retryAbove = 1.0;
 };
 
 /// Fits the template through all `numFrames` frames. Throws Error (naming the frame) when a fit

@@ -113,8 +113,8 @@ struct TemplateFitter::Impl
 
   /// Solves H X = R to the relative residual `tolerance` with the factor of `stage`; returns the
   /// conjugate-gradient steps.
-  int solveExact(const Quadratic& q, Unknowns& X, size_t stage, double tolerance,
-                 FrameFit& stats, bool mayRefactor = true) const
+  int solveExact(const Quadratic& q, Unknowns& X, size_t stage, double tolerance, FrameFit& stats,
+                 bool mayRefactor = true) const
   {
     constexpr int kMaxSteps = 20; // conjugate-gradient steps before the factor is renewed
     if (factors.size() <= stage) factors.resize(stage + 1), stale.resize(stage + 1, 0);
@@ -187,8 +187,8 @@ struct TemplateFitter::Impl
     parallelFor(0, n,
                 [&](int i)
                 {
-                  Eigen::Matrix4d block =
-                      Eigen::Matrix4d::Identity() * (edgeWeight * neighbours.degree(i) + temporalWeight);
+                  Eigen::Matrix4d block = Eigen::Matrix4d::Identity() *
+                                          (edgeWeight * neighbours.degree(i) + temporalWeight);
                   Eigen::Matrix<double, 4, 3> rhs = Eigen::Matrix<double, 4, 3>::Zero();
                   rhs.topRows<3>().setIdentity();
                   rhs *= temporalWeight;
@@ -237,13 +237,14 @@ void checkOptions(const TemplateFitOptions& o)
   if (!(o.refactorSteps >= 0) || !std::isfinite(o.refactorSteps))
     throw Error("Template fit: refactorSteps must be 0 or more.");
   if (o.nearestEvery < 1) throw Error("Template fit: nearestEvery must be at least 1.");
-  if (!(o.maxNearestDistance > 0)) throw Error("Template fit: maxNearestDistance must be > 0.");
+  if (!(o.maximumNearestDistance > 0))
+    throw Error("Template fit: maximumNearestDistance must be > 0.");
   if (!(o.nearestReuse >= 0) || !std::isfinite(o.nearestReuse))
     throw Error("Template fit: nearestReuse must be 0 or more.");
   if (!(o.correspondenceOutlier >= 0))
     throw Error("Template fit: correspondenceOutlier must be >= 0.");
-  if (!(o.maxNormalAngle > 0 && o.maxNormalAngle <= 180))
-    throw Error("Template fit: maxNormalAngle must be in (0, 180] degrees.");
+  if (!(o.maximumNormalAngle > 0 && o.maximumNormalAngle <= 180))
+    throw Error("Template fit: maximumNormalAngle must be in (0, 180] degrees.");
 }
 } // namespace
 
@@ -296,7 +297,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
 
   const SurfaceLocator locator(frame);
   const Points frameNormals = faceNormals(frame);
-  const double minCosine = std::cos(options_.maxNormalAngle * M_PI / 180.0);
+  const double minCosine = std::cos(options_.maximumNormalAngle * M_PI / 180.0);
   std::vector<int> hint(n, -1);
   // Where each vertex was when its closest point was last searched for (nearestReuse).
   constexpr double kFar = std::numeric_limits<double>::infinity();
@@ -337,11 +338,11 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
                                                         frame.vertex(frame.F(f, 1)),
                                                         frame.vertex(frame.F(f, 2)), s.bary);
                     s.distance = (s.position - query).norm();
-                    if (s.distance <= options_.maxNearestDistance) s.face = f;
+                    if (s.distance <= options_.maximumNearestDistance) s.face = f;
                   }
                   if (!s.valid())
                   {
-                    s = locator.closestPoint(query, options_.maxNearestDistance, hint[i]);
+                    s = locator.closestPoint(query, options_.maximumNearestDistance, hint[i]);
                     searches.fetch_add(1, std::memory_order_relaxed);
                     // A failed search leaves the hint as it was: nothing to reuse.
                     if (s.valid())

@@ -5,7 +5,8 @@
 //   E = wc Ec + ws Es + wd Ed + wt Et
 //   Ec = 1/|C| sum_{i in C} |A_i t_i - c_i|^2      c_i: dense correspondence on the frame
 //   Ed = 1/|D| sum_{i in D} |A_i t_i - n_i|^2      n_i: closest frame point, valid when within
-//                                                   maxNearestDistance and normals < 90 deg apart
+//                                                   maximumNearestDistance and normals < 90 deg
+//                                                   apart
 //   Es = 1/sum|N(i)| sum_i sum_{j in N(i)} |A_i - A_j|_F^2
 //   Et = 1/N sum_i |A_i - I|_F^2                    relative to the previous frame's fit
 //
@@ -21,6 +22,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace clothtrack
@@ -74,8 +76,8 @@ struct TemplateFitOptions
   /// is not: the unit of length sets their balance. Lengths enter the energy multiplied by this
   /// (1: metres, 100: centimetres); thresholds and results stay in metres.
   double lengthScale = 1.0;
-  double maxNearestDistance = 0.2; ///< metres
-  double maxNormalAngle = 90.0;    ///< degrees
+  double maximumNearestDistance = 0.2; ///< metres
+  double maximumNormalAngle = 90.0;    ///< degrees
   /// A vertex that moved less than this (metres) since its last closest-point search on the
   /// frame keeps that search's triangle and is projected onto it: the point found is then at
   /// most twice this much farther than the closest one. 0 searches for every vertex in every
@@ -113,6 +115,11 @@ struct FrameFit
   double energy = 0.0;             ///< E at the end of the last stage
   double seconds = 0.0;
   bool resumed = false; ///< positions kept from an earlier run, not fitted here
+  /// The sequence fit's judge of this fit (SequenceFitHooks::judge): at most 1 is trusted, more
+  /// is doubtful; 0 when nothing judged it.
+  double doubt = 0.0;
+  int attempts = 1;     ///< fits tried for the frame (more when the first one was doubtful)
+  std::string recovery; ///< empty, or the other start whose fit was kept instead of the first
 };
 
 /// Deforms one template connectivity onto frames. The symbolic factorisation is shared by all

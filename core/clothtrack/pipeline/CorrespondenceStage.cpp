@@ -67,7 +67,8 @@ void correspondFrames(const TemplatePatches& patches, int templateFrame,
           const auto start = std::chrono::steady_clock::now();
           FrameCorrespondence c = k == templateFrame ? selfCorrespondence(patches.templateMesh())
                                                      : patches.correspond(frame(k), landmarks(k));
-          c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          c.seconds =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           {
             const std::lock_guard<std::mutex> lock(mutex);
             ready[m] = std::move(c);

@@ -12,6 +12,8 @@ TemplateSelection chooseTemplateFrame(const std::vector<const TriangleMesh*>& fr
   parallelFor(
       0, static_cast<int>(frames.size()),
       [&](int k) { topology[k] = frameTopology(*frames[k], options.minimumShellArea); }, 1);
-  return selectTemplate(topology, options, restPoseDistance);
+  TemplateSelection selection = selectTemplate(topology, options, restPoseDistance);
+  selection.frames = std::move(topology);
+  return selection;
 }
 } // namespace clothtrack

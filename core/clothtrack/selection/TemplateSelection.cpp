@@ -75,7 +75,7 @@ TemplateSelection selectTemplate(const std::vector<FrameTopology>& frames,
     return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
   };
   bool byPose = false;
-  if (options.criterion == TemplateCriterion::RestPose)
+  if (options.templateCriterion == TemplateCriterion::RestPose)
     for (int i = 0; i < n; ++i) byPose = byPose || (s.candidate[i] && std::isfinite(pose(i)));
   s.decidedBy = byPose ? TemplateCriterion::RestPose : TemplateCriterion::AreaRatio;
   for (int i = 0; i < n; ++i)

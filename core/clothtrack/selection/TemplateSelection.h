@@ -38,7 +38,7 @@ struct TemplateSelectionOptions
 {
   double minimumShellArea = 0.1; ///< m^2: smaller components are noise, not body parts
   int persistence = 3;           ///< a split counts only if it lasts this many consecutive frames
-  TemplateCriterion criterion = TemplateCriterion::RestPose;
+  TemplateCriterion templateCriterion = TemplateCriterion::RestPose;
 };
 
 struct TemplateSelection
@@ -47,6 +47,7 @@ struct TemplateSelection
   std::vector<int> persistentShells; ///< per frame: shell count once short-lived splits are ignored
   std::vector<char> candidate;       ///< passed the topological criteria
   TemplateCriterion decidedBy = TemplateCriterion::AreaRatio; ///< the criterion that chose
+  std::vector<FrameTopology> frames; ///< per frame: its criteria (filled by chooseTemplateFrame)
 };
 
 /// The criteria of one frame.

@@ -1,0 +1,163 @@
+#include "FrameConfidence.h"
+
+#include <clothtrack/base/Error.h>
+#include <clothtrack/base/Parallel.h>
+#include <clothtrack/mesh/SurfaceLocator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <unordered_map>
+
+namespace clothtrack
+{
+namespace
+{
+/// Mean distance of every `stride`-th point to the surface, summed in a fixed order.
+double meanDistance(const Points& points, const SurfaceLocator& locator, long stride)
+{
+  const long samples = (static_cast<long>(points.rows()) + stride - 1) / stride;
+  if (samples == 0) return 0.0;
+  const double sum =
+      parallelSum(samples,
+                  [&](long from, long to)
+                  {
+                    double part = 0;
+                    for (long i = from; i < to; ++i)
+                      part += locator.closestPoint(points.row(i * stride).transpose()).distance;
+                    return part;
+                  });
+  return sum / samples;
+}
+
+Vec3 faceNormal(const Points& V, const Triangles& F, int f)
+{
+  const Vec3 a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+  return (b - a).cross(c - a);
+}
+
+std::string centimetres(double metres)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f cm", 100.0 * metres);
+  return text;
+}
+
+std::string percent(double fraction)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f %%", 100.0 * fraction);
+  return text;
+}
+} // namespace
+
+ConfidenceMeter::ConfidenceMeter(const TriangleMesh& templateMesh,
+                                 const FrameConfidenceOptions& options)
+    : faces_(templateMesh.F), vertices_(templateMesh.numVertices()), options_(options)
+{
+  const Points& T = templateMesh.V;
+  const Triangles& F = templateMesh.F;
+  // Each undirected edge once, with the faces on its two sides.
+  std::unordered_map<long long, int> index;
+  index.reserve(static_cast<size_t>(F.rows()) * 2);
+  for (int f = 0; f < F.rows(); ++f)
+    for (int c = 0; c < 3; ++c)
+    {
+      const int a = std::min(F(f, c), F(f, (c + 1) % 3)), b = std::max(F(f, c), F(f, (c + 1) % 3));
+      const long long key = static_cast<long long>(a) * vertices_ + b;
+      auto [it, inserted] = index.try_emplace(key, static_cast<int>(edges_.size()));
+      if (inserted)
+        edges_.push_back({a, b, f, -1, (T.row(a) - T.row(b)).norm(), 0.0});
+      else
+        edges_[it->second].right = f;
+    }
+  for (Edge& e : edges_)
+    if (e.right >= 0)
+    {
+      const Vec3 n0 = faceNormal(T, F, e.left), n1 = faceNormal(T, F, e.right);
+      const double scale = n0.norm() * n1.norm();
+      e.angle = scale > 0 ? std::acos(std::clamp(n0.dot(n1) / scale, -1.0, 1.0)) : 0.0;
+    }
+}
+
+void ConfidenceMeter::measureDistortion(const Points& aligned, FrameConfidence& confidence) const
+{
+  if (aligned.rows() != vertices_)
+    throw Error("Frame confidence: " + std::to_string(aligned.rows()) +
+                " aligned vertices for a template of " + std::to_string(vertices_) + ".");
+  double stretchSum = 0.0;
+  int stretched = 0, interior = 0, folded = 0;
+  for (const Edge& e : edges_)
+  {
+    const double after = (aligned.row(e.a) - aligned.row(e.b)).norm();
+    if (e.length > 0 && after > 0)
+    {
+      stretchSum += std::abs(std::log(after / e.length));
+      ++stretched;
+    }
+    if (e.right < 0) continue;
+    const Vec3 m0 = faceNormal(aligned, faces_, e.left), m1 = faceNormal(aligned, faces_, e.right);
+    const double scale = m0.norm() * m1.norm();
+    if (!(scale > 0)) continue;
+    ++interior;
+    const double angle = std::acos(std::clamp(m0.dot(m1) / scale, -1.0, 1.0));
+    folded += angle - e.angle > M_PI / 2;
+  }
+  confidence.stretch = stretched ? stretchSum / stretched : 0.0;
+  confidence.folded = interior ? static_cast<double>(folded) / interior : 0.0;
+}
+
+FrameConfidence ConfidenceMeter::operator()(const Points& aligned, const TriangleMesh& frame,
+                                            double knownSurfaceDistance, int coverageSamples) const
+{
+  FrameConfidence c;
+  measureDistortion(aligned, c);
+  const TriangleMesh alignedMesh{aligned, faces_};
+  c.surfaceDistance = knownSurfaceDistance >= 0 ? knownSurfaceDistance
+                                                : meanDistance(aligned, SurfaceLocator(frame), 1);
+  const long stride = coverageSamples > 0 ? std::max<long>(1, frame.V.rows() / coverageSamples) : 1;
+  c.coverageDistance = meanDistance(frame.V, SurfaceLocator(alignedMesh), stride);
+  judgeConfidence(c, options_);
+  return c;
+}
+
+void judgeConfidence(FrameConfidence& c, const FrameConfidenceOptions& options)
+{
+  struct Measure
+  {
+    const char* name;
+    double value, limit;
+    bool length;
+  };
+  const Measure measures[] = {
+      {"surface distance", c.surfaceDistance, options.maximumSurfaceDistance, true},
+      {"coverage", c.coverageDistance, options.maximumCoverageDistance, true},
+      {"stretch", c.stretch, options.maximumStretch, false},
+      {"folds", c.folded, options.maximumFoldedFraction, false}};
+  c.severity = 0.0;
+  c.doubt.clear();
+  for (const Measure& m : measures)
+  {
+    if (!(m.limit > 0)) continue;
+    const double ratio = m.value / m.limit;
+    c.severity = std::isnan(ratio) ? INFINITY : std::max(c.severity, ratio);
+    if (!(ratio <= 1.0)) // NaN is doubtful too
+    {
+      const std::string shown =
+          m.length ? centimetres(m.value) + " > " + centimetres(m.limit)
+          : m.name == std::string("folds")
+              ? percent(m.value) + " > " + percent(m.limit)
+              : std::to_string(m.value).substr(0, 5) + " > " + std::to_string(m.limit).substr(0, 5);
+      c.doubt += (c.doubt.empty() ? "" : ", ") + std::string(m.name) + " " + shown;
+    }
+  }
+  c.confidence = std::clamp(2.0 - c.severity, 0.0, 1.0);
+}
+
+FrameConfidence frameConfidence(const Points& aligned, const TriangleMesh& templateMesh,
+                                const TriangleMesh& frame, const FrameConfidenceOptions& options,
+                                double knownSurfaceDistance)
+{
+  return ConfidenceMeter(templateMesh, options)(aligned, frame, knownSurfaceDistance);
+}
+} // namespace clothtrack

@@ -1,0 +1,20 @@
+#include "FitJudge.h"
+
+#include <memory>
+
+namespace clothtrack
+{
+void judgeFits(SequenceFitHooks& hooks, const TriangleMesh& templateMesh,
+               const FitJudgeOptions& options)
+{
+  // The template's edges are measured once; the coverage of each fit is estimated from a few
+  // thousand of the frame's vertices.
+  auto meter = std::make_shared<const ConfidenceMeter>(templateMesh, options.limits);
+  hooks.judge = [meter](int, const TriangleMesh& frame, const FrameFit& fit)
+  {
+    const double known = fit.surfaceDistance.size() ? fit.surfaceDistance.mean() : -1.0;
+    return (*meter)(fit.positions, frame, known, 4000).severity;
+  };
+  hooks.retryAbove = options.retrySeverity;
+}
+} // namespace clothtrack

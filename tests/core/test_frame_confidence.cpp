@@ -1,0 +1,111 @@
+#include <clothtrack/base/Error.h>
+#include <clothtrack/eval/FrameConfidence.h>
+#include <clothtrack/eval/SequenceQuality.h>
+#include <clothtrack/mesh/Primitives.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace clothtrack;
+
+namespace
+{
+const TriangleMesh kSphere = icosphere(3, 0.2);
+} // namespace
+
+TEST(FrameConfidence, TheTemplateOnItsOwnFrameIsConfident)
+{
+  const FrameConfidence c = frameConfidence(kSphere.V, kSphere, kSphere);
+  EXPECT_NEAR(c.surfaceDistance, 0.0, 1e-12);
+  EXPECT_NEAR(c.coverageDistance, 0.0, 1e-12);
+  EXPECT_NEAR(c.stretch, 0.0, 1e-12);
+  EXPECT_EQ(c.folded, 0.0);
+  EXPECT_EQ(c.confidence, 1.0);
+  EXPECT_FALSE(c.doubtful());
+}
+
+TEST(FrameConfidence, ARigidMotionIsNotADistortion)
+{
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(1.1, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  Points moved = (kSphere.V * R.transpose()).rowwise() + Vec3(0.5, -0.2, 1.0).transpose();
+  const TriangleMesh frame{moved, kSphere.F};
+  const FrameConfidence c = frameConfidence(moved, kSphere, frame);
+  EXPECT_NEAR(c.stretch, 0.0, 1e-9);
+  EXPECT_EQ(c.folded, 0.0);
+  EXPECT_FALSE(c.doubtful()) << c.doubt;
+}
+
+TEST(FrameConfidence, ATemplateCrumpledOntoTheFrameIsDoubtful)
+{
+  // A sheet folded flat like an accordion every two columns: no edge changes length and the
+  // folded sheet lies on the frame, which the folds alone reveal.
+  const TriangleMesh sheet = grid(20, 1.0);
+  Points folded = sheet.V;
+  for (Eigen::Index v = 0; v < folded.rows(); ++v)
+  {
+    const double x = sheet.V(v, 0) * 10.0; // in strips of width 1
+    const double within = x - 2.0 * std::floor(x / 2.0);
+    folded(v, 0) = (within <= 1.0 ? within : 2.0 - within) / 10.0;
+  }
+  const TriangleMesh frame{folded, sheet.F};
+  const FrameConfidence c = frameConfidence(folded, sheet, frame);
+  EXPECT_NEAR(c.surfaceDistance, 0.0, 1e-12);
+  EXPECT_NEAR(c.stretch, 0.0, 1e-9);
+  EXPECT_GT(c.folded, 0.1);
+  ASSERT_TRUE(c.doubtful());
+  EXPECT_EQ(c.doubt.find("folds"), 0u) << c.doubt;
+  EXPECT_EQ(c.confidence, 0.0);
+  // Folded in one place only: a fold the limit tolerates.
+  Points once = sheet.V;
+  for (Eigen::Index v = 0; v < once.rows(); ++v)
+    if (once(v, 0) > 0.5) once(v, 0) = 1.0 - once(v, 0);
+  const FrameConfidence single = frameConfidence(once, sheet, TriangleMesh{once, sheet.F});
+  EXPECT_GT(single.folded, 0.0);
+  EXPECT_FALSE(single.doubtful()) << single.doubt;
+}
+
+TEST(FrameConfidence, AStretchedTemplateIsDoubtful)
+{
+  const Points bigger = 1.5 * kSphere.V;
+  const FrameConfidence c = frameConfidence(bigger, kSphere, TriangleMesh{bigger, kSphere.F});
+  EXPECT_NEAR(c.stretch, std::log(1.5), 1e-9);
+  EXPECT_EQ(c.folded, 0.0);
+  ASSERT_TRUE(c.doubtful());
+  EXPECT_NE(c.doubt.find("stretch"), std::string::npos) << c.doubt;
+  // Between once and twice the limit: confidence falls linearly.
+  const double limit = FrameConfidenceOptions{}.maximumStretch;
+  EXPECT_NEAR(c.severity, std::log(1.5) / limit, 1e-12);
+  EXPECT_NEAR(c.confidence, std::clamp(2.0 - std::log(1.5) / limit, 0.0, 1.0), 1e-12);
+}
+
+TEST(FrameConfidence, PartOfTheFrameTheTemplateMissesShowsInCoverage)
+{
+  // The frame has a second body part 1 m away that the template does not reach.
+  const TriangleMesh frame = concatenate(kSphere, icosphere(3, 0.2, Vec3(1.0, 0, 0)));
+  const FrameConfidence c = frameConfidence(kSphere.V, kSphere, frame);
+  EXPECT_NEAR(c.surfaceDistance, 0.0, 1e-12);
+  EXPECT_GT(c.coverageDistance, 0.3);
+  ASSERT_TRUE(c.doubtful());
+  EXPECT_EQ(c.doubt.find("coverage"), 0u) << c.doubt;
+  EXPECT_EQ(c.confidence, 0.0);
+}
+
+TEST(FrameConfidence, SequenceQualityListsTheDoubtfulFrames)
+{
+  const Points flat = 1.5 * kSphere.V; // stretched
+  const TriangleMesh flatFrame{flat, kSphere.F};
+  const std::vector<const Points*> aligned = {&kSphere.V, &flat, &kSphere.V};
+  const std::vector<const TriangleMesh*> frames = {&kSphere, &flatFrame, &kSphere};
+  const SequenceQuality q = sequenceQuality(aligned, kSphere.F, frames, {}, 0);
+  ASSERT_EQ(q.confidence.size(), 3u);
+  EXPECT_EQ(q.doubtfulFrames, std::vector<int>{1});
+  EXPECT_TRUE(sequenceQuality(aligned, kSphere.F, frames).confidence.empty());
+  EXPECT_THROW(sequenceQuality(aligned, kSphere.F, frames, {}, 3), Error);
+}
+
+TEST(FrameConfidence, MismatchedVertexCountsAreAnError)
+{
+  const Points fewer = kSphere.V.topRows(10);
+  EXPECT_THROW(frameConfidence(fewer, kSphere, kSphere), Error);
+}
