@@ -28,6 +28,11 @@ const std::vector<Preset>& presets()
       {"trousers-squat", GarmentType::Trousers, MotionType::Squat, 0.0, 1.0},
       {"shirt-armraise", GarmentType::Shirt, MotionType::ArmRaise, 0.0, 1.0},
       {"dress-samba", GarmentType::Dress, MotionType::Dance, 0.22, 2.0},
+      // The cases the body fit found hardest: a loop with a full turn and high knees in wide
+      // trousers, quick half-turns, and arms folded against the body (limbs merge).
+      {"trousers-walkloop", GarmentType::Trousers, MotionType::WalkLoop, 0.0, 1.5},
+      {"shirt-halfturns", GarmentType::Shirt, MotionType::HalfTurns, 0.0, 1.0},
+      {"shirt-crossedarms", GarmentType::Shirt, MotionType::CrossedArms, 0.0, 1.0},
   };
   return all;
 }

@@ -35,7 +35,8 @@ struct SyntheticFrame
   Points markers;        ///< the 14 marker positions (see syntheticMarkerNames())
 };
 
-/// dress-walk, skirt-turn, trousers-squat, shirt-armraise, dress-samba.
+/// dress-walk, skirt-turn, trousers-squat, shirt-armraise, dress-samba, trousers-walkloop,
+/// shirt-halfturns, shirt-crossedarms.
 CTFILTERS_EXPORT const std::vector<std::string>& syntheticPresets();
 /// forehead, shoulders, elbows, wrists, belly, knees, feet (toes), heels.
 CTFILTERS_EXPORT const std::vector<std::string>& syntheticMarkerNames();

@@ -8,8 +8,9 @@ namespace clothtrack
 {
 const std::vector<std::string>& motionNames()
 {
-  static const std::vector<std::string> names = {"walk",     "turn", "squat",
-                                                 "armraise", "wave", "dance"};
+  static const std::vector<std::string> names = {"walk",     "turn", "squat",    "armraise",
+                                                 "wave",     "dance", "walkloop", "halfturns",
+                                                 "crossedarms"};
   return names;
 }
 
@@ -124,6 +125,55 @@ BodyPose motionPose(MotionType motion, double t)
     set(p, LeftElbow, -0.5 - 0.3 * s, 0, 0);
     set(p, RightElbow, -0.5 + 0.3 * s, 0, 0);
     p.translation = Vec3(0.12 * std::sin(beat / 2), 0, 0.1 * std::sin(beat / 4));
+    break;
+  }
+  case MotionType::WalkLoop:
+  {
+    // Heading turns with the path: facing +Z at the start, along (sin h, 0, cos h) after.
+    const double radius = 1.0, heading = twoPi * t / 5.0;
+    const double phase = twoPi * t / 1.0;
+    const double s = std::sin(phase);
+    set(p, Pelvis, 0, heading, 0);
+    // High knee raises: the swinging leg's hip flexes far, its knee folds.
+    set(p, LeftHip, -0.95 * std::max(0.0, s) + 0.25 * std::max(0.0, -s), 0, 0);
+    set(p, RightHip, -0.95 * std::max(0.0, -s) + 0.25 * std::max(0.0, s), 0, 0);
+    set(p, LeftKnee, 0.1 + 1.3 * std::max(0.0, s), 0, 0);
+    set(p, RightKnee, 0.1 + 1.3 * std::max(0.0, -s), 0, 0);
+    set(p, LeftShoulder, -0.45 * s, 0, -0.55);
+    set(p, RightShoulder, 0.45 * s, 0, 0.55);
+    set(p, LeftElbow, -0.6, 0, 0);
+    set(p, RightElbow, -0.6, 0, 0);
+    p.translation = Vec3(radius * (1 - std::cos(heading)), 0.02 * std::cos(2 * phase),
+                         radius * std::sin(heading));
+    break;
+  }
+  case MotionType::HalfTurns:
+  {
+    // Each 1.2 s: 0.4 s of turning by half a turn (smoothstep), then 0.8 s facing still.
+    const double period = 1.2, turn = 0.4;
+    const double u = std::min(1.0, std::fmod(t, period) / turn);
+    const double heading = M_PI * (std::floor(t / period) + u * u * (3 - 2 * u));
+    const double spin = std::sin(M_PI * u); // arms fly out while turning
+    set(p, Pelvis, 0, heading, 0);
+    set(p, LeftHip, -0.25 * spin, 0, -0.05);
+    set(p, RightHip, 0, 0, 0.05);
+    set(p, LeftKnee, 0.1 + 0.5 * spin, 0, 0);
+    set(p, RightKnee, 0.1, 0, 0);
+    armsDown(p, 0.6 - 0.9 * spin);
+    set(p, LeftElbow, -0.8 * (1 - spin), 0, 0);
+    set(p, RightElbow, -0.8 * (1 - spin), 0, 0);
+    break;
+  }
+  case MotionType::CrossedArms:
+  {
+    // Upper arms hang against the sides, forearms folded forward and turned in across the chest.
+    const double breath = std::sin(twoPi * t / 3.5);
+    set(p, LeftShoulder, -0.1, -1.5, -0.7);
+    set(p, RightShoulder, -0.1, 1.5, 0.7);
+    set(p, LeftElbow, -2.1 - 0.05 * breath, 0, 0);
+    set(p, RightElbow, -2.1 - 0.05 * breath, 0, 0);
+    set(p, Spine2, 0.03 * breath, 0, 0);
+    set(p, Pelvis, 0, 0.08 * std::sin(twoPi * t / 6.0), 0.02 * breath);
     break;
   }
   }
