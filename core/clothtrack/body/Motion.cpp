@@ -8,9 +8,8 @@ namespace clothtrack
 {
 const std::vector<std::string>& motionNames()
 {
-  static const std::vector<std::string> names = {"walk",     "turn", "squat",    "armraise",
-                                                 "wave",     "dance", "walkloop", "halfturns",
-                                                 "crossedarms"};
+  static const std::vector<std::string> names = {
+      "walk", "turn", "squat", "armraise", "wave", "dance", "walkloop", "halfturns", "crossedarms"};
   return names;
 }
 

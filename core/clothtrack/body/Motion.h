@@ -11,14 +11,14 @@ namespace clothtrack
 {
 enum class MotionType
 {
-  Walk,     ///< walking forward along +Z, arms swinging
-  Turn,     ///< turning on the spot, one full turn every 4 s, small steps
-  Squat,    ///< squats every 3 s, arms forward
-  ArmRaise, ///< arms from hanging against the body to overhead and back, every 3 s
-  Wave,     ///< right arm raised and waving
-  Dance,    ///< a samba-like dance: hip sway, alternating steps, arms in and out
-  WalkLoop, ///< walking a circle of 1 m radius (one full turn every 5 s), knees raised high
-  HalfTurns, ///< quick half-turns (180 degrees in 0.4 s, every 1.2 s), arms swinging out
+  Walk,       ///< walking forward along +Z, arms swinging
+  Turn,       ///< turning on the spot, one full turn every 4 s, small steps
+  Squat,      ///< squats every 3 s, arms forward
+  ArmRaise,   ///< arms from hanging against the body to overhead and back, every 3 s
+  Wave,       ///< right arm raised and waving
+  Dance,      ///< a samba-like dance: hip sway, alternating steps, arms in and out
+  WalkLoop,   ///< walking a circle of 1 m radius (one full turn every 5 s), knees raised high
+  HalfTurns,  ///< quick half-turns (180 degrees in 0.4 s, every 1.2 s), arms swinging out
   CrossedArms ///< standing still, forearms folded across the chest, breathing and a slight sway
 };
 
