@@ -8,7 +8,6 @@
 
 #include <clothtrack/base/Error.h>
 #include <clothtrack/base/Parallel.h>
-#include <clothtrack/eval/SequenceQuality.h>
 #include <clothtrack/fit/MotionPrediction.h>
 #include <clothtrack/fit/TemplateFit.h>
 #include <clothtrack/pipeline/FitJudge.h>
@@ -307,17 +306,9 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     addAlignedBlocks(vtkMultiBlockDataSet::GetData(outputVector, 0), sequence, templateMesh, j,
                      fits);
     // Nothing is passed on unjudged: each frame's confidence, and a warning for a doubtful one.
-    std::vector<const Points*> aligned;
     std::vector<const TriangleMesh*> framePointers;
-    std::vector<double> known;
-    for (int k = 0; k < n; ++k)
-    {
-      aligned.push_back(&fits[k].positions);
-      framePointers.push_back(&frames[k]);
-      known.push_back(fits[k].surfaceDistance.size() ? fits[k].surfaceDistance.mean() : -1.0);
-    }
-    const SequenceQuality quality =
-        sequenceQuality(aligned, templateMesh.F, framePointers, known, j);
+    for (const TriangleMesh& frame : frames) framePointers.push_back(&frame);
+    const SequenceQuality quality = fittedSequenceQuality(fits, templateMesh.F, framePointers, j);
     for (int k : quality.doubtfulFrames)
       vtkWarningMacro(<< "template fit: " << frameName(sequence->GetBlock(k), k)
                       << " is doubtful: " << quality.confidence[k].doubt);

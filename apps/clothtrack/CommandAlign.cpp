@@ -469,13 +469,6 @@ nlohmann::json evaluate(const Run& run)
   std::vector<double> landmarkCounts;
   for (const auto& l : run.body.landmarks) landmarkCounts.push_back(static_cast<double>(l.size()));
   metrics["landmarks_per_frame"] = landmarkCounts;
-  std::vector<const Points*> aligned;
-  std::vector<double> known;
-  for (const FrameFit& f : run.fits)
-  {
-    aligned.push_back(&f.positions);
-    known.push_back(f.resumed ? -1.0 : f.surfaceDistance.mean());
-  }
   if (!in.truth.empty())
     addVertexErrorMetrics(metrics, run.errors, j, s.truthInput, run.verticesWithTruth);
   if (in.markers)
@@ -486,7 +479,7 @@ nlohmann::json evaluate(const Run& run)
   }
   // Without ground truth too: how well the result covers each frame, and how smoothly it moves.
   const SequenceQuality quality =
-      sequenceQuality(aligned, run.templateMesh().F, in.pointers(), known, j);
+      fittedSequenceQuality(run.fits, run.templateMesh().F, in.pointers(), j);
   metrics["per_frame_surface_distance_m"] = quality.surfaceDistance;
   metrics["per_frame_coverage_distance_m"] = quality.coverageDistance;
   metrics["mean_surface_distance_m"] = quality.meanSurfaceDistance;

@@ -100,7 +100,7 @@ def _property_name(keyword):
 
 def _set_stage_keywords(stage, algorithm, options):
     for keyword in _STAGE_KEYWORDS[stage]:
-        value = options.pop(keyword, None)
+        value = options.get(keyword)
         if value is not None:
             getattr(algorithm, "Set" + _property_name(keyword))(value)
 
@@ -141,7 +141,6 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
                                                                           ", ".join(sorted(known))))
     if threads < 0:
         raise ValueError("threads must be 0 (every core) or more")
-    options = dict(options)
     sequence = _as_sequence(frames, frame_rate)
     body = clothtrack.ctBodyFit()
     body.SetInputData(sequence)

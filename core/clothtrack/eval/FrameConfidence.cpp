@@ -1,7 +1,6 @@
 #include "FrameConfidence.h"
 
 #include <clothtrack/base/Error.h>
-#include <clothtrack/base/Parallel.h>
 #include <clothtrack/mesh/SurfaceLocator.h>
 
 #include <algorithm>
@@ -13,40 +12,29 @@ namespace clothtrack
 {
 namespace
 {
-/// Mean distance of every `stride`-th point to the surface, summed in a fixed order.
-double meanDistance(const Points& points, const SurfaceLocator& locator, long stride)
-{
-  const long samples = (static_cast<long>(points.rows()) + stride - 1) / stride;
-  if (samples == 0) return 0.0;
-  const double sum =
-      parallelSum(samples,
-                  [&](long from, long to)
-                  {
-                    double part = 0;
-                    for (long i = from; i < to; ++i)
-                      part += locator.closestPoint(points.row(i * stride).transpose()).distance;
-                    return part;
-                  });
-  return sum / samples;
-}
-
 Vec3 faceNormal(const Points& V, const Triangles& F, int f)
 {
   const Vec3 a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
   return (b - a).cross(c - a);
 }
 
-std::string centimetres(double metres)
+/// How a measure is shown in a doubt.
+enum class Shown
 {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.1f cm", 100.0 * metres);
-  return text;
-}
+  Centimetres,
+  Percent,
+  Number
+};
 
-std::string percent(double fraction)
+std::string show(double value, Shown shown)
 {
   char text[32];
-  std::snprintf(text, sizeof(text), "%.1f %%", 100.0 * fraction);
+  if (shown == Shown::Centimetres)
+    std::snprintf(text, sizeof(text), "%.1f cm", 100.0 * value);
+  else if (shown == Shown::Percent)
+    std::snprintf(text, sizeof(text), "%.1f %%", 100.0 * value);
+  else
+    std::snprintf(text, sizeof(text), "%.3f", value);
   return text;
 }
 } // namespace
@@ -113,10 +101,11 @@ FrameConfidence ConfidenceMeter::operator()(const Points& aligned, const Triangl
   FrameConfidence c;
   measureDistortion(aligned, c);
   const TriangleMesh alignedMesh{aligned, faces_};
-  c.surfaceDistance = knownSurfaceDistance >= 0 ? knownSurfaceDistance
-                                                : meanDistance(aligned, SurfaceLocator(frame), 1);
+  c.surfaceDistance = knownSurfaceDistance >= 0
+                          ? knownSurfaceDistance
+                          : meanClosestDistance(aligned, SurfaceLocator(frame));
   const long stride = coverageSamples > 0 ? std::max<long>(1, frame.V.rows() / coverageSamples) : 1;
-  c.coverageDistance = meanDistance(frame.V, SurfaceLocator(alignedMesh), stride);
+  c.coverageDistance = meanClosestDistance(frame.V, SurfaceLocator(alignedMesh), stride);
   judgeConfidence(c, options_);
   return c;
 }
@@ -127,13 +116,13 @@ void judgeConfidence(FrameConfidence& c, const FrameConfidenceOptions& options)
   {
     const char* name;
     double value, limit;
-    bool length;
+    Shown shown;
   };
   const Measure measures[] = {
-      {"surface distance", c.surfaceDistance, options.maximumSurfaceDistance, true},
-      {"coverage", c.coverageDistance, options.maximumCoverageDistance, true},
-      {"stretch", c.stretch, options.maximumStretch, false},
-      {"folds", c.folded, options.maximumFoldedFraction, false}};
+      {"surface distance", c.surfaceDistance, options.maximumSurfaceDistance, Shown::Centimetres},
+      {"coverage", c.coverageDistance, options.maximumCoverageDistance, Shown::Centimetres},
+      {"stretch", c.stretch, options.maximumStretch, Shown::Number},
+      {"folds", c.folded, options.maximumFoldedFraction, Shown::Percent}};
   c.severity = 0.0;
   c.doubt.clear();
   for (const Measure& m : measures)
@@ -142,14 +131,8 @@ void judgeConfidence(FrameConfidence& c, const FrameConfidenceOptions& options)
     const double ratio = m.value / m.limit;
     c.severity = std::isnan(ratio) ? INFINITY : std::max(c.severity, ratio);
     if (!(ratio <= 1.0)) // NaN is doubtful too
-    {
-      const std::string shown =
-          m.length ? centimetres(m.value) + " > " + centimetres(m.limit)
-          : m.name == std::string("folds")
-              ? percent(m.value) + " > " + percent(m.limit)
-              : std::to_string(m.value).substr(0, 5) + " > " + std::to_string(m.limit).substr(0, 5);
-      c.doubt += (c.doubt.empty() ? "" : ", ") + std::string(m.name) + " " + shown;
-    }
+      c.doubt += (c.doubt.empty() ? "" : ", ") + std::string(m.name) + " " +
+                 show(m.value, m.shown) + " > " + show(m.limit, m.shown);
   }
   c.confidence = std::clamp(2.0 - c.severity, 0.0, 1.0);
 }

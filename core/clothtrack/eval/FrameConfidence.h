@@ -55,8 +55,6 @@ public:
   /// The stretch and folds alone (no frame needed): fills `stretch` and `folded`.
   void measureDistortion(const Points& aligned, FrameConfidence& confidence) const;
 
-  const FrameConfidenceOptions& options() const { return options_; }
-
 private:
   struct Edge
   {

@@ -10,14 +10,6 @@ namespace clothtrack
 {
 namespace
 {
-double meanDistance(const Points& points, const SurfaceLocator& locator)
-{
-  double sum = 0;
-  for (Eigen::Index i = 0; i < points.rows(); ++i)
-    sum += locator.closestPoint(points.row(i).transpose()).distance;
-  return points.rows() ? sum / points.rows() : 0.0;
-}
-
 double mean(const std::vector<double>& values)
 {
   double sum = 0;
@@ -52,10 +44,10 @@ SequenceQuality sequenceQuality(const std::vector<const Points*>& aligned,
       {
         const bool known =
             k < static_cast<int>(knownSurfaceDistance.size()) && knownSurfaceDistance[k] >= 0;
-        q.surfaceDistance[k] =
-            known ? knownSurfaceDistance[k] : meanDistance(*aligned[k], SurfaceLocator(*frames[k]));
+        q.surfaceDistance[k] = known ? knownSurfaceDistance[k]
+                                     : meanClosestDistance(*aligned[k], SurfaceLocator(*frames[k]));
         const TriangleMesh alignedMesh{*aligned[k], templateFaces};
-        q.coverageDistance[k] = meanDistance(frames[k]->V, SurfaceLocator(alignedMesh));
+        q.coverageDistance[k] = meanClosestDistance(frames[k]->V, SurfaceLocator(alignedMesh));
         if (!judge) return;
         FrameConfidence& c = q.confidence[k];
         meter->measureDistortion(*aligned[k], c);

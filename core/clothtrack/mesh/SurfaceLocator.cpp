@@ -1,5 +1,7 @@
 #include "SurfaceLocator.h"
 
+#include <clothtrack/base/Parallel.h>
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -267,5 +269,19 @@ std::vector<LineHit> SurfaceLocator::intersectLine(const Vec3& origin, const Vec
   for (const auto& h : hits)
     if (unique.empty() || h.t - unique.back().t > tol) unique.push_back(h);
   return unique;
+}
+double meanClosestDistance(const Points& points, const SurfaceLocator& surface, long stride)
+{
+  const long samples = (static_cast<long>(points.rows()) + stride - 1) / stride;
+  if (samples == 0) return 0.0;
+  return parallelSum(samples,
+                     [&](long from, long to)
+                     {
+                       double part = 0;
+                       for (long i = from; i < to; ++i)
+                         part += surface.closestPoint(points.row(i * stride).transpose()).distance;
+                       return part;
+                     }) /
+         samples;
 }
 } // namespace clothtrack

@@ -57,4 +57,8 @@ private:
   std::vector<std::array<Vec3, 3>> corners_; // triangle corners in leaf order
   std::vector<Vec3> normals_;                // their unit normals
 };
+
+/// Mean distance to the surface of every `stride`-th point, in parallel; the same for any thread
+/// count. 0 without points.
+double meanClosestDistance(const Points& points, const SurfaceLocator& surface, long stride = 1);
 } // namespace clothtrack

@@ -17,4 +17,19 @@ void judgeFits(SequenceFitHooks& hooks, const TriangleMesh& templateMesh,
   };
   hooks.retryAbove = options.retrySeverity;
 }
+
+SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
+                                      const Triangles& templateFaces,
+                                      const std::vector<const TriangleMesh*>& frames,
+                                      int templateFrame, const FitJudgeOptions& options)
+{
+  std::vector<const Points*> aligned;
+  std::vector<double> known;
+  for (const FrameFit& f : fits)
+  {
+    aligned.push_back(&f.positions);
+    known.push_back(f.surfaceDistance.size() ? f.surfaceDistance.mean() : -1.0);
+  }
+  return sequenceQuality(aligned, templateFaces, frames, known, templateFrame, options.limits);
+}
 } // namespace clothtrack

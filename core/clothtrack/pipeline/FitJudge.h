@@ -3,6 +3,7 @@
 // confidence (eval/FrameConfidence.h), and the sequence fit tries a clearly doubtful frame again
 // from other starts (fit/SequenceFit.h).
 #include <clothtrack/eval/FrameConfidence.h>
+#include <clothtrack/eval/SequenceQuality.h>
 #include <clothtrack/fit/SequenceFit.h>
 
 namespace clothtrack
@@ -20,4 +21,11 @@ struct FitJudgeOptions
 /// Sets hooks.judge (each fit's severity) and hooks.retryAbove.
 void judgeFits(SequenceFitHooks& hooks, const TriangleMesh& templateMesh,
                const FitJudgeOptions& options = {});
+
+/// The quality of a fitted sequence and each frame's confidence (eval/SequenceQuality.h), reusing
+/// the surface distances the fit measured (resumed frames have none and are measured).
+SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
+                                      const Triangles& templateFaces,
+                                      const std::vector<const TriangleMesh*>& frames,
+                                      int templateFrame, const FitJudgeOptions& options = {});
 } // namespace clothtrack
