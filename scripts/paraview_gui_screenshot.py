@@ -58,12 +58,11 @@ def main():
             sys.exit("paraview_gui_screenshot: %s is not installed" % tool)
     with tempfile.TemporaryDirectory() as fbdir:
         with virtual_display.VirtualDisplay(args.size, ["-fbdir", fbdir]) as xvfb:
-            display = xvfb.display
             # Default settings (--dr), and a private home so that the user's own are left alone. A
             # warning opens the message window over the view: use data that reads without one.
             home = os.path.join(fbdir, "home")
             os.makedirs(home)
-            env = dict(os.environ, DISPLAY=display, HOME=home, PV_PLUGIN_PATH=os.path.abspath(args.plugin_dir))
+            env = xvfb.environment(dict(os.environ, HOME=home, PV_PLUGIN_PATH=os.path.abspath(args.plugin_dir)))
             env.pop("PYTHONPATH", None)
             width, height = args.size.split("x")
             command = ["paraview", "--dr", "-geometry", "%sx%s+0+0" % (width, height)]

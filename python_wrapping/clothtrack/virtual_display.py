@@ -5,6 +5,11 @@ with no window between choosing a number and taking it. It runs with -noreset, s
 connect one after the other never meet a server in the middle of a reset. What it prints is kept
 and shown when the command fails, to tell a lost display from a failing command.
 
+A private display is only private if programs stay off the others: OpenMPI (linked by ParaView's
+pvpython) loads hwloc, whose GL component opens every X display from :0 to :9 to list GPUs. When
+another program's server shuts down during that probe, Xlib ends the process ("X connection to :0
+broken"). The command's environment therefore turns that component off (HWLOC_COMPONENTS=-gl).
+
 As a program, it runs a command under a display of its own and returns the command's exit code:
 
 usage: python3 virtual_display.py [--size WxH] [--server-arg ARG ...] -- COMMAND [ARGS ...]
@@ -22,6 +27,7 @@ import sys
 import tempfile
 
 STARTUP_SECONDS = 30.0
+NO_DISPLAY_PROBE = "-gl"  # hwloc components to leave out: the GL one probes every X display
 
 
 class VirtualDisplayError(RuntimeError):
@@ -67,6 +73,15 @@ class VirtualDisplay:
                 raise VirtualDisplayError("Xvfb did not start: " + (lines[-1] if lines else "it exited"))
             text += chunk
         return text.decode().strip()
+
+    def environment(self, base=None):
+        """base (default: os.environ) with DISPLAY set to this server and hwloc's probe of the
+        other displays turned off, for the programs run under it."""
+        env = dict(os.environ if base is None else base, DISPLAY=self.display)
+        components = [c for c in env.get("HWLOC_COMPONENTS", "").split(",") if c]
+        if NO_DISPLAY_PROBE not in components:
+            env["HWLOC_COMPONENTS"] = ",".join(components + [NO_DISPLAY_PROBE])
+        return env
 
     def log_lines(self):
         """What the server printed so far."""
@@ -134,7 +149,7 @@ def main(argv):
     signal.signal(signal.SIGTERM, _terminate)
     try:
         with VirtualDisplay(size, server_args) as display:
-            child = subprocess.Popen(command, env=dict(os.environ, DISPLAY=display.display))
+            child = subprocess.Popen(command, env=display.environment())
             try:
                 code = child.wait()
             finally:

@@ -51,6 +51,19 @@ class VirtualDisplayTest(unittest.TestCase):
                                 env=env, timeout=60)
         self.assertEqual(result.returncode, 7)
 
+    def test_command_stays_off_the_other_displays(self):
+        # hwloc (loaded by OpenMPI in pvpython) would otherwise open :0 to :9, and a test whose
+        # server shuts down meanwhile would end the command.
+        show = "import os; print(os.environ['DISPLAY'], os.environ['HWLOC_COMPONENTS'])"
+        env = dict(os.environ, HWLOC_COMPONENTS="no_os")
+        env.pop("DISPLAY", None)
+        result = subprocess.run([sys.executable, SCRIPT, "--", sys.executable, "-c", show],
+                                env=env, capture_output=True, text=True, timeout=60)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        display, components = result.stdout.split()
+        self.assertRegex(display, r"^:\d+$")
+        self.assertEqual(components, "no_os,-gl")
+
     def test_ensure_display_keeps_an_existing_display(self):
         saved = os.environ.get("DISPLAY")
         try:
