@@ -33,6 +33,8 @@
 vtkStandardNewMacro(ctBodyFit);
 
 ctOptionClampDefinition(ctBodyFit, TemporalWeight, double, Options.fit.temporalWeight, 0.0, 1000.0);
+ctOptionClampDefinition(ctBodyFit, RootTemporalWeight, double, Options.fit.rootTemporalWeight, 0.0,
+                        1000.0);
 ctOptionClampDefinition(ctBodyFit, ShapeFrames, int, Options.fit.shapeFrames, 1, 1000);
 ctOptionClampDefinition(ctBodyFit, Samples, int, Options.fit.samples, 50, 100000);
 ctOptionClampDefinition(ctBodyFit, OutsideTolerance, double, Options.transfer.outsideTolerance, 0.0,
@@ -263,6 +265,7 @@ void ctBodyFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NearestWeight: " << this->NearestWeight << "\n";
   os << indent << "InsideWeight: " << this->InsideWeight << "\n";
   os << indent << "TemporalWeight: " << this->Options.fit.temporalWeight << "\n";
+  os << indent << "RootTemporalWeight: " << this->Options.fit.rootTemporalWeight << "\n";
   os << indent << "ShapeFrames: " << this->Options.fit.shapeFrames << "\n";
   os << indent << "Samples: " << this->Options.fit.samples << "\n";
   os << indent << "OutsideTolerance: " << this->Options.transfer.outsideTolerance << "\n";

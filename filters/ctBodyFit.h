@@ -57,6 +57,9 @@ public:
   /// Weight of joint rotation changes between consecutive frames.
   virtual void SetTemporalWeight(double value);
   virtual double GetTemporalWeight();
+  /// The same for the root's rotation (lighter: a turning body is not held back).
+  virtual void SetRootTemporalWeight(double value);
+  virtual double GetRootTemporalWeight();
   /// Key frames used to estimate the shape.
   virtual void SetShapeFrames(int value);
   virtual int GetShapeFrames();

@@ -48,7 +48,11 @@ struct BodyFitOptions
 {
   std::vector<BodyFitStage> stages = {
       {1.0, 0.1, 0.0, 6, 0.4}, {0.5, 1.0, 1.0, 8, 0.15}, {0.2, 1.0, 4.0, 8, 0.1}};
-  double temporalWeight = 0.01;    ///< on joint rotation changes from the previous frame (1/rad^2)
+  double temporalWeight = 0.01; ///< on joint rotation changes from the previous frame (1/rad^2)
+  /// The same on the root's rotation. Light: the dense terms of a good fit are ~1e-4 (squared
+  /// metres), and a heavier prior there holds a turning body back, which then twists its spine
+  /// and crosses its legs to follow the frame.
+  double rootTemporalWeight = 0.0003;
   double posePriorWeight = 0.0002; ///< on joint rotations (root excluded)
   /// Prior multiplier on rotations a joint barely makes (a knee's sideways bend; fractions of it
   /// on hip twist, ankle, toe, clavicle and wrist rotations)

@@ -22,6 +22,12 @@ public:
 
   BodySamples& samples() { return samples_; }
 
+  /// Weight of the temporal prior on rotation parameter k: the root's is the lighter one.
+  double temporalWeight(int k) const
+  {
+    return k < 3 ? options_.rootTemporalWeight : options_.temporalWeight;
+  }
+
   /// Weight of the one-sided penalty on a knee bending backwards.
   double limitWeight() const { return 10.0 * options_.hingeStiffness * options_.posePriorWeight; }
 
@@ -82,7 +88,7 @@ public:
     for (int k : kHingeBends) e += limitWeight() * std::pow(std::min(0.0, x[k]), 2);
     if (previous)
       for (int k = 0; k < NumJoints * 3; ++k)
-        e += options_.temporalWeight * std::pow(x[k] - (*previous)[k], 2);
+        e += temporalWeight(k) * std::pow(x[k] - (*previous)[k], 2);
     return e;
   }
 
@@ -138,8 +144,8 @@ public:
           }
           if (prevPtr)
           {
-            h(k, k) += options_.temporalWeight;
-            g[k] += options_.temporalWeight * (x[k] - prev[k]);
+            h(k, k) += temporalWeight(k);
+            g[k] += temporalWeight(k) * (x[k] - prev[k]);
           }
         }
         for (int k = 0; k < kPoseParameters; ++k)
