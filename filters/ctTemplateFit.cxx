@@ -10,6 +10,7 @@
 #include <clothtrack/base/Parallel.h>
 #include <clothtrack/fit/MotionPrediction.h>
 #include <clothtrack/fit/TemplateFit.h>
+#include <clothtrack/pipeline/BodyStartPrediction.h>
 #include <clothtrack/pipeline/FitJudge.h>
 
 #include <vtkCharArray.h>
@@ -78,6 +79,70 @@ clothtrack::VertexTargets targetsOf(vtkPolyData* block, int n, const std::string
   return t;
 }
 
+/// One ctBodyFit output block: its skeleton (field data Pose and JointPositions) and whether
+/// its fit is ok (FitStatus).
+clothtrack::PosedSkeleton skeletonOf(vtkPolyData* block, const std::string& name, bool& ok)
+{
+  using namespace clothtrack;
+  vtkFieldData* fd = block ? block->GetFieldData() : nullptr;
+  vtkDataArray* pose = fd ? fd->GetArray("Pose") : nullptr;
+  vtkDataArray* joints = fd ? fd->GetArray("JointPositions") : nullptr;
+  vtkDataArray* status = fd ? fd->GetArray("FitStatus") : nullptr;
+  if (!pose || pose->GetNumberOfValues() != 3 * NumJoints + 3 || !joints ||
+      joints->GetNumberOfTuples() != NumJoints || joints->GetNumberOfComponents() != 3 || !status)
+    throw Error("the body of " + name +
+                " lacks the Pose, JointPositions or FitStatus field data (use ctBodyFit)");
+  PosedSkeleton out;
+  for (int j = 0; j < NumJoints; ++j)
+    for (int c = 0; c < 3; ++c)
+    {
+      out.pose.rotations(j, c) = pose->GetComponent(3 * j + c, 0);
+      out.joints(j, c) = joints->GetComponent(j, c);
+    }
+  for (int c = 0; c < 3; ++c) out.pose.translation[c] = pose->GetComponent(3 * NumJoints + c, 0);
+  ok = status->GetComponent(0, 0) == static_cast<int>(BodyFitStatus::Ok);
+  return out;
+}
+
+/// The start of each frame from its fitted body (ctBodyFit output 0); `fallback` for frames
+/// whose fit is not ok, and for all when the template frame's is not.
+clothtrack::StartPrediction bodyStart(vtkMultiBlockDataSet* sequence, vtkMultiBlockDataSet* bodies,
+                                      const clothtrack::TriangleMesh& templateMesh, int j,
+                                      clothtrack::StartPrediction fallback)
+{
+  using namespace clothtrack;
+  const int n = static_cast<int>(sequence->GetNumberOfBlocks());
+  std::vector<PosedSkeleton> skeletons;
+  std::vector<bool> trusted;
+  for (int k = 0; k < n; ++k)
+  {
+    bool ok = false;
+    skeletons.push_back(skeletonOf(vtkPolyData::SafeDownCast(bodies->GetBlock(k)),
+                                   frameName(sequence->GetBlock(k), k), ok));
+    trusted.push_back(ok);
+  }
+  if (!trusted[j]) return fallback;
+  auto* body = vtkPolyData::SafeDownCast(bodies->GetBlock(j));
+  vtkDataArray* weights = body->GetPointData()->GetArray("SkinWeights");
+  const vtkIdType nb = body->GetNumberOfPoints();
+  if (!weights || weights->GetNumberOfTuples() != nb ||
+      weights->GetNumberOfComponents() != NumJoints)
+    throw Error("the body of " + frameName(sequence->GetBlock(j), j) +
+                " lacks the SkinWeights point data (use ctBodyFit)");
+  Points vertices(nb, 3);
+  Eigen::MatrixXd w(nb, NumJoints);
+  for (vtkIdType i = 0; i < nb; ++i)
+  {
+    double p[3];
+    body->GetPoint(i, p);
+    vertices.row(i) << p[0], p[1], p[2];
+    for (int c = 0; c < NumJoints; ++c) w(i, c) = weights->GetComponent(i, c);
+  }
+  auto bound = std::make_shared<SkinnedTemplate>(templateMesh, vertices, w, skeletons[j]);
+  return bodyStartPrediction(std::move(bound), std::move(skeletons), std::move(trusted),
+                             std::move(fallback));
+}
+
 vtkSmartPointer<vtkPolyData> alignedPolyData(vtkPolyData* templateData,
                                              const clothtrack::TriangleMesh& templateMesh,
                                              const clothtrack::FrameFit& fit)
@@ -110,7 +175,7 @@ vtkSmartPointer<vtkPolyData> alignedPolyData(vtkPolyData* templateData,
 
 ctTemplateFit::ctTemplateFit()
 {
-  this->SetNumberOfInputPorts(3);
+  this->SetNumberOfInputPorts(4);
   this->SetNumberOfOutputPorts(2);
   this->SetDefaultStages();
 }
@@ -146,7 +211,7 @@ vtkTable* ctTemplateFit::GetSummaryOutput()
 int ctTemplateFit::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
-  if (port == 2) info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  if (port >= 2) info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
 
@@ -295,6 +360,14 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
                                             { return landmarks[k]; },
                                             this->Prediction.predictRadius);
     }
+    auto* bodies = this->GetNumberOfInputConnections(3) > 0
+                       ? vtkMultiBlockDataSet::GetData(inputVector[3], 0)
+                       : nullptr;
+    if (bodies && this->StartFromBody)
+    {
+      checkOneBlockPerFrame(sequence, bodies, "template fit", "bodies");
+      hooks.start = bodyStart(sequence, bodies, templateMesh, j, std::move(hooks.start));
+    }
     if (this->RetryDoubtfulFrames) judgeFits(hooks, templateMesh);
     hooks.progress = [this](double done)
     {
@@ -343,4 +416,5 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseNearest: " << this->Options.useNearest << "\n";
   os << indent << "RetryDoubtfulFrames: " << this->RetryDoubtfulFrames << "\n";
   os << indent << "PredictRadius: " << this->Prediction.predictRadius << "\n";
+  os << indent << "StartFromBody: " << this->StartFromBody << "\n";
 }

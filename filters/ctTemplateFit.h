@@ -10,6 +10,10 @@
  * Input port 2 (optional): the landmarks of every frame, output port 1 of ctBodyFit; with them
  * each frame's fit starts from its neighbour's moved by the landmarks' locally rigid motion
  * (PredictRadius, see clothtrack/MotionPrediction.h), which follows fast turns better.
+ * Input port 3 (optional): the fitted bodies, output port 0 of ctBodyFit; with them (and
+ * StartFromBody on) each frame's fit starts from the template posed by the body fitted to that
+ * frame (clothtrack/pipeline/BodyStartPrediction.h), which does not drift along the sequence;
+ * frames whose body fit is not ok start as without it.
  *
  * Every template vertex gets an affine map, found by minimising
  * wc Ec + ws Es + wd Ed + wt Et (correspondence, smoothness, nearest-point data, temporal) in
@@ -122,6 +126,12 @@ public:
   virtual void SetPredictRadius(double value);
   virtual double GetPredictRadius();
 
+  /// With bodies on input port 3: each frame starts from the template posed by its body
+  /// (default on).
+  vtkSetMacro(StartFromBody, bool);
+  vtkGetMacro(StartFromBody, bool);
+  vtkBooleanMacro(StartFromBody, bool);
+
   /// A frame whose fit is clearly doubtful (clothtrack/pipeline/FitJudge.h) is fitted again
   /// from other starts and the most confident fit kept (default on).
   vtkSetMacro(RetryDoubtfulFrames, bool);
@@ -149,6 +159,7 @@ private:
 
   int NumberOfThreads = 0;
   bool RetryDoubtfulFrames = true;
+  bool StartFromBody = true;
   clothtrack::TemplateFitOptions Options;
   clothtrack::StartPredictionOptions Prediction;
 };

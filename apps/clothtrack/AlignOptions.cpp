@@ -62,12 +62,15 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       po::value(&s.prediction.predictRadius)->default_value(s.prediction.predictRadius),
       "each frame's fit starts from its neighbour's moved by the landmarks' locally rigid motion, "
       "weighted over this radius (m; 0: from the neighbour's fit as it is)")(
+      "no-body-start", po::bool_switch(),
+      "start each frame's fit from its neighbour's (moved as --predict-radius says) rather than "
+      "from the template posed by the body fitted to the frame")(
       "no-retry", po::bool_switch(),
       "keep a frame's first fit even when it is clearly doubtful (by default such a frame is "
       "fitted again from other starts and the most confident fit kept)")(
       "no-correspondence", po::bool_switch(),
-      "ablation: fit without the correspondence term Ec (with --predict-radius 0: nearest "
-      "points alone, a sequential non-rigid ICP)");
+      "ablation: fit without the correspondence term Ec (with --predict-radius 0 --no-body-start: "
+      "nearest points alone, a sequential non-rigid ICP)");
 }
 
 void addCorrespondenceOptions(po::options_description& options, AlignSettings& s,
@@ -176,7 +179,7 @@ const char* usageOf(AlignMode mode)
 
 bool AlignSettings::needLandmarks() const
 {
-  return fit.useCorrespondence || prediction.predictRadius > 0 ||
+  return fit.useCorrespondence || prediction.predictRadius > 0 || startFromBody ||
          (forcedTemplate < 0 && selection.templateCriterion == TemplateCriterion::RestPose);
 }
 
@@ -189,6 +192,7 @@ nlohmann::json AlignSettings::fitKey() const
           {"nearest_reuse", fit.nearestReuse},
           {"truth_distance", truth.maximumTruthDistance},
           {"predict_radius", prediction.predictRadius},
+          {"body_start", startFromBody},
           {"use_correspondence", fit.useCorrespondence},
           {"retry_doubtful", retryDoubtful},
           {"stages", stagesJson(fit.stages)}};
@@ -214,6 +218,7 @@ std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode
   if (!stageSpec.empty()) s.fit.stages = parseStages(stageSpec);
   s.fit.useCorrespondence = !values["no-correspondence"].as<bool>();
   s.retryDoubtful = !values["no-retry"].as<bool>();
+  s.startFromBody = !values["no-body-start"].as<bool>();
   s.selection.templateCriterion = parseTemplateCriterion(criterion);
   check(s);
   return s;

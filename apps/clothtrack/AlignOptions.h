@@ -40,6 +40,10 @@ struct AlignSettings
   StartPredictionOptions prediction;
   TemplateFitOptions fit;
   PatchCorrespondenceOptions patches;
+  /// Each frame's fit starts from the template posed by the body fitted to the frame
+  /// (pipeline/BodyStartPrediction.h); frames with a doubtful body fit start from the landmark
+  /// prediction.
+  bool startFromBody = true;
   /// A frame whose fit is clearly doubtful is fitted again from other starts (FitJudge.h).
   bool retryDoubtful = true;
   bool skipBadFrames = false;

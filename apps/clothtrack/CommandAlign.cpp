@@ -22,6 +22,7 @@
 #include <clothtrack/fit/SequenceFit.h>
 #include <clothtrack/io/FrameList.h>
 #include <clothtrack/pipeline/BodyStage.h>
+#include <clothtrack/pipeline/BodyStartPrediction.h>
 #include <clothtrack/pipeline/CorrespondenceStage.h>
 #include <clothtrack/pipeline/FitJudge.h>
 #include <clothtrack/pipeline/TemplateStage.h>
@@ -32,6 +33,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -370,6 +372,12 @@ void runFitStage(Run& run, const AlignedOutput& output)
         [&](int k) -> const TriangleMesh& { return in.frames[k]; },
         [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; },
         s.prediction.predictRadius);
+  if (s.startFromBody)
+  {
+    BodyModel ownModel;
+    hooks.start = bodyStartPrediction(bodyModel(s.modelPath, ownModel), run.body.body,
+                                      run.templateMesh(), j, std::move(hooks.start));
+  }
   if (s.retryDoubtful) judgeFits(hooks, run.templateMesh());
   hooks.resumed = [&](int k) { return output.earlier(in.frameNumber[k]); };
   BackgroundWriter writer; // finishes before what its tasks refer to goes

@@ -57,6 +57,7 @@ int main(int argc, char* argv[])
   fit->SetInputConnection(0, frames->GetOutputPort(1));
   fit->SetInputConnection(1, correspondence->GetOutputPort(0));
   fit->SetInputConnection(2, body->GetOutputPort(1));
+  fit->SetInputConnection(3, body->GetOutputPort(0)); // each frame starts from its body
   // Evaluation against the ground truth.
   vtkNew<ctAlignmentError> error;
   error->SetInputConnection(0, fit->GetOutputPort(0));

@@ -34,7 +34,7 @@ def build_pipeline(frames, ground_truth=None, frame_rate=25.0, shape_frames=8):
         Input=OutputPort(p["frames"], 1), Landmarks=OutputPort(p["body"], 1))
     p["fit"] = simple.ClothTrackTemplateFit(
         Input=OutputPort(p["frames"], 1), Correspondence=OutputPort(p["correspondence"], 0),
-        Landmarks=OutputPort(p["body"], 1))
+        Landmarks=OutputPort(p["body"], 1), Bodies=OutputPort(p["body"], 0))
     aligned = OutputPort(p["fit"], 0)
     if ground_truth:
         p["truth"] = simple.ClothTrackSequenceReader(FileName=ground_truth)

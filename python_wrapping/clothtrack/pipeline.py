@@ -85,11 +85,12 @@ def _as_sequence(frames, frame_rate):
 # Keywords of align() that set a filter property of the same name (CamelCase); None keeps the
 # filter's default, which is the core's (docs/parameters.md).
 _STAGE_KEYWORDS = {
-    "body": ("samples", "temporal_weight", "outside_tolerance", "inside_tolerance"),
+    "body": ("samples", "temporal_weight", "root_temporal_weight", "outside_tolerance",
+             "inside_tolerance"),
     "correspondence": ("epsilon", "minimum_radius", "maximum_radius", "minimum_seed_consensus",
                        "minimum_shell_area", "persistence"),
     "fit": ("solver_tolerance", "intermediate_tolerance", "refactor_steps", "nearest_reuse",
-            "maximum_nearest_distance"),
+            "maximum_nearest_distance", "start_from_body"),
     "error": ("maximum_truth_distance",),
 }
 
@@ -118,13 +119,16 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
     template_criterion  the automatic choice's last criterion after the topology: "rest-pose" (the
                     fitted body closest to the rest pose) or "area-ratio" (the paper's)
     solver          "exact" (sparse Cholesky, the default) or "lbfgs" (the paper's solver)
-    predict_radius  width (metres) of the landmark-driven start of each frame; 0 starts each frame
-                    from its neighbour's fit unchanged, as the paper does
+    predict_radius  width (metres) of the landmark-driven start of the frames whose body fit is
+                    doubtful (of every frame with start_from_body=False); 0 starts them from
+                    their neighbour's fit unchanged, as the paper does
     progress        optional callable(stage_name, fraction) called as the stages advance
     threads         threads of each stage (0: every core)
     options         further parameters by their snake_case names (docs/parameters.md), e.g.
                     epsilon=0.2, minimum_radius=0.05, minimum_shell_area=0.05, persistence=2,
-                    solver_tolerance=1e-5, maximum_truth_distance=0.05
+                    solver_tolerance=1e-5, maximum_truth_distance=0.05, start_from_body=False
+                    (each frame starts from its neighbour's fit instead of the template posed
+                    by the frame's fitted body)
 
     Returns an Alignment. Raises RuntimeError with the stage's message when a stage fails.
     """
@@ -160,6 +164,7 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
     fit.SetInputData(0, sequence)
     fit.SetInputConnection(1, correspondence.GetOutputPort(0))
     fit.SetInputConnection(2, body.GetOutputPort(1))
+    fit.SetInputConnection(3, body.GetOutputPort(0))
     fit.SetSolver(fit.LBFGS if solver == "lbfgs" else fit.EXACT)
     fit.SetPredictRadius(predict_radius)
     _set_stage_keywords("fit", fit, options)

@@ -37,6 +37,7 @@ fit = clothtrack.ctTemplateFit()  # output 0: the aligned template per frame, 1:
 fit.SetInputConnection(0, reader.GetOutputPort(1))
 fit.SetInputConnection(1, correspondence.GetOutputPort(0))
 fit.SetInputConnection(2, body.GetOutputPort(1))
+fit.SetInputConnection(3, body.GetOutputPort(0))
 fit.Update()
 print("template frame %d" % correspondence.GetChosenFrame())
 

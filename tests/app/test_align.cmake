@@ -124,9 +124,10 @@ expect_run(0 "wrote 3 frames" render ${WORK}/staged --movie-only --size 320x320)
 if (NOT EXISTS ${WORK}/staged/movie/movie_0002.png)
   message(FATAL_ERROR "render wrote no movie frames")
 endif ()
-# The ablation without Ec and prediction needs no body fit when the template is not chosen by pose.
+# The ablation without Ec, prediction and body start needs no body fit when the template is not
+# chosen by pose.
 expect_run(0 "body fit: skipped" align ${WORK}/synth/frames --frames 0:3 -o ${WORK}/icp --no-correspondence
-  --predict-radius 0 --template-criterion area-ratio --no-report)
+  --predict-radius 0 --no-body-start --template-criterion area-ratio --no-report)
 file(WRITE ${WORK}/bad/markers.csv "frame,time,marker,x,y,z\n0,0,knee,1,2\n")
 expect_run(1 "markers.csv:2: expected frame,time,marker,x,y,z" align ${WORK}/synth/frames -o ${WORK}/x
   --markers ${WORK}/bad/markers.csv)
