@@ -104,24 +104,22 @@ clothtrack::PosedSkeleton skeletonOf(vtkPolyData* block, const std::string& name
   return out;
 }
 
-/// The start of each frame from its fitted body (ctBodyFit output 0); `fallback` for frames
-/// whose fit is not ok, and for all when the template frame's is not.
+/// The start of each frame from its fitted body (ctBodyFit output 0), `fallback` where the body
+/// is not trusted (bodyStartPrediction).
 clothtrack::StartPrediction bodyStart(vtkMultiBlockDataSet* sequence, vtkMultiBlockDataSet* bodies,
                                       const clothtrack::TriangleMesh& templateMesh, int j,
                                       clothtrack::StartPrediction fallback)
 {
   using namespace clothtrack;
   const int n = static_cast<int>(sequence->GetNumberOfBlocks());
-  std::vector<PosedSkeleton> skeletons;
-  std::vector<bool> trusted;
+  FittedBodies fitted;
   for (int k = 0; k < n; ++k)
   {
     bool ok = false;
-    skeletons.push_back(skeletonOf(vtkPolyData::SafeDownCast(bodies->GetBlock(k)),
-                                   frameName(sequence->GetBlock(k), k), ok));
-    trusted.push_back(ok);
+    fitted.skeletons.push_back(skeletonOf(vtkPolyData::SafeDownCast(bodies->GetBlock(k)),
+                                          frameName(sequence->GetBlock(k), k), ok));
+    fitted.trusted.push_back(ok);
   }
-  if (!trusted[j]) return fallback;
   auto* body = vtkPolyData::SafeDownCast(bodies->GetBlock(j));
   vtkDataArray* weights = body->GetPointData()->GetArray("SkinWeights");
   const vtkIdType nb = body->GetNumberOfPoints();
@@ -129,18 +127,16 @@ clothtrack::StartPrediction bodyStart(vtkMultiBlockDataSet* sequence, vtkMultiBl
       weights->GetNumberOfComponents() != NumJoints)
     throw Error("the body of " + frameName(sequence->GetBlock(j), j) +
                 " lacks the SkinWeights point data (use ctBodyFit)");
-  Points vertices(nb, 3);
-  Eigen::MatrixXd w(nb, NumJoints);
+  fitted.templateBody.resize(nb, 3);
+  fitted.weights.resize(nb, NumJoints);
   for (vtkIdType i = 0; i < nb; ++i)
   {
     double p[3];
     body->GetPoint(i, p);
-    vertices.row(i) << p[0], p[1], p[2];
-    for (int c = 0; c < NumJoints; ++c) w(i, c) = weights->GetComponent(i, c);
+    fitted.templateBody.row(i) << p[0], p[1], p[2];
+    for (int c = 0; c < NumJoints; ++c) fitted.weights(i, c) = weights->GetComponent(i, c);
   }
-  auto bound = std::make_shared<SkinnedTemplate>(templateMesh, vertices, w, skeletons[j]);
-  return bodyStartPrediction(std::move(bound), std::move(skeletons), std::move(trusted),
-                             std::move(fallback));
+  return bodyStartPrediction(templateMesh, j, std::move(fitted), std::move(fallback));
 }
 
 vtkSmartPointer<vtkPolyData> alignedPolyData(vtkPolyData* templateData,

@@ -11,16 +11,13 @@ namespace clothtrack
 {
 namespace
 {
-/// Each joint's world rotation: its ancestors' local rotations and its own, root first.
+/// Each joint's world rotation (the rotation part of its world transform, which does not
+/// depend on where the joints are).
 std::vector<Eigen::Matrix3d> worldRotations(const BodyPose& pose)
 {
-  const auto& parents = jointParents();
+  const std::vector<Eigen::Matrix4d> world = jointWorldTransforms(Points::Zero(NumJoints, 3), pose);
   std::vector<Eigen::Matrix3d> out(NumJoints);
-  for (int j = 0; j < NumJoints; ++j)
-  {
-    const Eigen::Matrix3d local = axisAngleToMatrix(pose.rotations.row(j).transpose());
-    out[j] = parents[j] < 0 ? local : Eigen::Matrix3d(out[parents[j]] * local);
-  }
+  for (int j = 0; j < NumJoints; ++j) out[j] = world[j].topLeftCorner<3, 3>();
   return out;
 }
 } // namespace

@@ -2,19 +2,26 @@
 
 #include <clothtrack/base/Error.h>
 
+#include <memory>
 #include <string>
 
 namespace clothtrack
 {
-StartPrediction bodyStartPrediction(std::shared_ptr<const SkinnedTemplate> bound,
-                                    std::vector<PosedSkeleton> skeletons, std::vector<bool> trusted,
-                                    StartPrediction fallback)
+StartPrediction bodyStartPrediction(const TriangleMesh& templateMesh, int templateFrame,
+                                    FittedBodies bodies, StartPrediction fallback)
 {
-  if (!bound) throw Error("body start: no template bound to the body");
-  if (trusted.size() != skeletons.size())
-    throw Error("body start: " + std::to_string(trusted.size()) + " fit flags for " +
-                std::to_string(skeletons.size()) + " bodies");
-  return [bound = std::move(bound), skeletons = std::move(skeletons), trusted = std::move(trusted),
+  const int n = static_cast<int>(bodies.skeletons.size());
+  if (static_cast<int>(bodies.trusted.size()) != n)
+    throw Error("body start: " + std::to_string(bodies.trusted.size()) + " fit flags for " +
+                std::to_string(n) + " bodies");
+  if (templateFrame < 0 || templateFrame >= n)
+    throw Error("body start: the template frame " + std::to_string(templateFrame) +
+                " has no fitted body");
+  // A doubtful body at the template frame would bind the template wrongly everywhere.
+  if (!bodies.trusted[templateFrame]) return fallback;
+  auto bound = std::make_shared<const SkinnedTemplate>(
+      templateMesh, bodies.templateBody, bodies.weights, bodies.skeletons[templateFrame]);
+  return [bound, skeletons = std::move(bodies.skeletons), trusted = std::move(bodies.trusted),
           fallback = std::move(fallback)](int k, int from, const Points& fitOfFrom) -> Points
   {
     if (k < 0 || k >= static_cast<int>(skeletons.size()))
@@ -28,23 +35,15 @@ StartPrediction bodyStartPrediction(const BodyModel& model, const BodyFitResult&
                                     const TriangleMesh& templateMesh, int templateFrame,
                                     StartPrediction fallback)
 {
-  const int n = static_cast<int>(body.frames.size());
-  if (templateFrame < 0 || templateFrame >= n)
-    throw Error("body start: the template frame " + std::to_string(templateFrame) +
-                " has no fitted body");
-  // A doubtful body at the template frame would bind the template wrongly everywhere.
-  if (body.frames[templateFrame].status != BodyFitStatus::Ok) return fallback;
-  std::vector<PosedSkeleton> skeletons;
-  std::vector<bool> trusted;
+  FittedBodies bodies;
   for (const BodyFrameFit& f : body.frames)
   {
-    skeletons.push_back(posedSkeleton(model, body.beta, f.pose));
-    trusted.push_back(f.status == BodyFitStatus::Ok);
+    bodies.skeletons.push_back(posedSkeleton(model, body.beta, f.pose));
+    bodies.trusted.push_back(f.status == BodyFitStatus::Ok);
   }
-  const BodyPose& pose = body.frames[templateFrame].pose;
-  auto bound = std::make_shared<SkinnedTemplate>(templateMesh, model.posed(body.beta, pose).V,
-                                                 model.weights, skeletons[templateFrame]);
-  return bodyStartPrediction(std::move(bound), std::move(skeletons), std::move(trusted),
-                             std::move(fallback));
+  if (templateFrame >= 0 && templateFrame < static_cast<int>(body.frames.size()))
+    bodies.templateBody = model.posed(body.beta, body.frames[templateFrame].pose).V;
+  bodies.weights = model.weights;
+  return bodyStartPrediction(templateMesh, templateFrame, std::move(bodies), std::move(fallback));
 }
 } // namespace clothtrack

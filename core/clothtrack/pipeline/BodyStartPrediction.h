@@ -6,20 +6,28 @@
 #include <clothtrack/body/SkinnedTemplate.h>
 #include <clothtrack/fit/SequenceFit.h>
 
-#include <memory>
 #include <vector>
 
 namespace clothtrack
 {
-/// `skeletons` and `trusted` have one entry per frame; `fallback` may be empty (the
-/// neighbour's fit as it is).
-StartPrediction bodyStartPrediction(std::shared_ptr<const SkinnedTemplate> bound,
-                                    std::vector<PosedSkeleton> skeletons, std::vector<bool> trusted,
-                                    StartPrediction fallback);
+/// What a fitted sequence of bodies gives the start: one skeleton and one trusted flag per frame,
+/// and the posed vertices and skinning weights of the template frame's body.
+struct FittedBodies
+{
+  std::vector<PosedSkeleton> skeletons;
+  std::vector<bool> trusted;
+  Points templateBody;
+  Eigen::MatrixXd weights;
+};
 
-/// The same from a body fit result and its model (the command line, the benchmarks): frames
-/// whose fit is not ok are not trusted; when the template frame's is not, every frame starts
-/// from the fallback.
+/// The start of frame k: the template bound to the template frame's body and posed by frame k's.
+/// Untrusted frames start from `fallback` (which may be empty: the neighbour's fit as it is);
+/// when the template frame's body is not trusted, `fallback` itself is returned.
+StartPrediction bodyStartPrediction(const TriangleMesh& templateMesh, int templateFrame,
+                                    FittedBodies bodies, StartPrediction fallback);
+
+/// The same from a body fit result and its model (the command line): frames whose fit is not
+/// ok are not trusted.
 StartPrediction bodyStartPrediction(const BodyModel& model, const BodyFitResult& body,
                                     const TriangleMesh& templateMesh, int templateFrame,
                                     StartPrediction fallback);
