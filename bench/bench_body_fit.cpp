@@ -1,5 +1,6 @@
 // Body fit under clothing, measured.
-//   bench_body_fit synthetic PRESET FRAMES   synthetic capture with known beta and pose
+//   bench_body_fit synthetic PRESET FRAMES [SAMPLES [STATURE]]   synthetic capture with known
+//                                            beta and pose (STATURE: the person's height, m)
 //   bench_body_fit folder DIR [STRIDE]        a real sequence (no body ground truth)
 // Prints the accuracy figures and the time of the fit.
 #include "ctBuiltinBodyModel.h"
@@ -62,12 +63,14 @@ void printStatus(const BodyFitResult& fit)
               100 * inside / fit.frames.size());
 }
 
-int synthetic(const std::string& preset, int numFrames, const BodyFitOptions& options)
+int synthetic(const std::string& preset, int numFrames, double stature,
+              const BodyFitOptions& options)
 {
   const BodyModel& model = builtinBodyModel();
   SyntheticOptions synth;
   synth.preset = preset;
   synth.frames = numFrames;
+  synth.stature = stature;
   std::vector<SyntheticFrame> truth;
   std::vector<TriangleMesh> captures;
   const Eigen::VectorXd trueBeta = generateSyntheticSequence(
@@ -188,20 +191,21 @@ int main(int argc, char** argv)
   try
   {
     const std::string mode = argc > 1 ? argv[1] : "";
-    // Optional last argument: body samples of the dense terms.
+    // Optional arguments: body samples of the dense terms; the synthetic person's height.
     BodyFitOptions options;
     if (mode == "synthetic" && argc >= 4)
     {
       if (argc > 4) options.samples = std::stoi(argv[4]);
-      return synthetic(argv[2], std::stoi(argv[3]), options);
+      return synthetic(argv[2], std::stoi(argv[3]), argc > 5 ? std::stod(argv[5]) : 0.0, options);
     }
     if (mode == "folder" && argc >= 3)
     {
       if (argc > 4) options.samples = std::stoi(argv[4]);
       return folder(argv[2], argc > 3 ? std::stoi(argv[3]) : 1, options);
     }
-    std::fprintf(stderr, "usage: bench_body_fit synthetic PRESET FRAMES [SAMPLES] | folder DIR "
-                         "[STRIDE [SAMPLES]]\n");
+    std::fprintf(stderr,
+                 "usage: bench_body_fit synthetic PRESET FRAMES [SAMPLES [STATURE]] | folder DIR "
+                 "[STRIDE [SAMPLES]]\n");
     return 1;
   }
   catch (const std::exception& e)

@@ -5,6 +5,7 @@
 #include <clothtrack/mesh/Primitives.h>
 #include <clothtrack/synth/ClothSimulator.h>
 
+#include <cstdio>
 #include <random>
 
 namespace clothtrack
@@ -58,6 +59,41 @@ const std::vector<std::string>& syntheticMarkerNames()
   return names;
 }
 
+namespace
+{
+/// Rest-pose height of the body of shape beta (extent along y, the model's up axis).
+double restHeight(const BodyModel& model, const Eigen::VectorXd& beta)
+{
+  Points vertices, joints;
+  model.shape(beta, vertices, joints);
+  return vertices.col(1).maxCoeff() - vertices.col(1).minCoeff();
+}
+
+/// Sets beta[0], the component that carries stature, so that the body is `stature` tall
+/// (bisection: the height grows with beta[0]).
+void setStature(const BodyModel& model, double stature, Eigen::VectorXd& beta)
+{
+  if (beta.size() == 0) throw Error("the body model has no shape space to set the stature");
+  const double range = 4.0; // standard deviations
+  Eigen::VectorXd low = beta, high = beta;
+  low[0] = -range;
+  high[0] = range;
+  const double shortest = restHeight(model, low), tallest = restHeight(model, high);
+  if (!(shortest < tallest) || stature < shortest || stature > tallest)
+  {
+    char text[160];
+    std::snprintf(text, sizeof(text), "stature %.3f m is outside the body model's %.2f-%.2f m",
+                  stature, std::min(shortest, tallest), std::max(shortest, tallest));
+    throw Error(text);
+  }
+  for (int step = 0; step < 40; ++step)
+  {
+    beta[0] = 0.5 * (low[0] + high[0]);
+    (restHeight(model, beta) < stature ? low : high)[0] = beta[0];
+  }
+}
+} // namespace
+
 Eigen::VectorXd generateSyntheticSequence(const BodyModel& model, const SyntheticOptions& options,
                                           const std::function<void(const SyntheticFrame&)>& sink)
 {
@@ -79,6 +115,7 @@ Eigen::VectorXd generateSyntheticSequence(const BodyModel& model, const Syntheti
   Eigen::VectorXd beta = Eigen::VectorXd::Zero(model.numShapeComponents());
   for (int k = 0; k < std::min(6, static_cast<int>(beta.size())); ++k)
     beta[k] = std::clamp(options.shapeSpread * normal(rng), -2.0, 2.0);
+  if (options.stature > 0) setStature(model, options.stature, beta);
 
   GarmentOptions garmentOptions;
   garmentOptions.type = preset->garment;

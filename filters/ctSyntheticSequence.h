@@ -22,6 +22,9 @@ struct SyntheticOptions
   double shapeSpread = 0.7;
   /// Hem height as a fraction of stature (dress, skirt); <= 0 keeps the preset's.
   double hemHeight = 0.0;
+  /// Height of the body in rest pose, metres: > 0 sets the first shape component so that the
+  /// random body has this height (people far from the mean); <= 0 keeps the random height.
+  double stature = 0.0;
 };
 
 struct SyntheticFrame

@@ -190,16 +190,42 @@ Input readInput(const AlignSettings& s)
   return in;
 }
 
+/// Every body-fit and transfer option, so that landmarks of other options (an older release's
+/// defaults) are not reused.
+nlohmann::json bodyStageKey(const BodyStageOptions& o)
+{
+  const BodyFitOptions& f = o.fit;
+  nlohmann::json stages = nlohmann::json::array();
+  for (const BodyFitStage& st : f.stages)
+    stages.push_back(
+        {st.landmarkWeight, st.nearestWeight, st.insideWeight, st.iterations, st.searchRadius});
+  return {{"stages", stages},
+          {"weights",
+           {f.temporalWeight, f.rootTemporalWeight, f.posePriorWeight, f.hingeStiffness,
+            f.shapePriorWeight}},
+          {"shape", {f.shapeComponents, f.shapeFrames, f.shapeRounds}},
+          {"samples", f.samples},
+          {"robust_scale", f.robustScale},
+          {"extremities",
+           {f.extremityPersistence, f.extremityGate, f.handGate, f.reachTolerance,
+            f.shapeReachTolerance}},
+          {"headings", f.headings},
+          {"judge", {f.poorDistance, f.insideTolerance, f.poorInside}},
+          {"transfer", {o.transfer.outsideTolerance, o.transfer.insideTolerance}}};
+}
+
 /// Stage 1, or its result from the work folder.
 void runBodyStage(Run& run)
 {
   const AlignSettings& s = run.settings;
   const int n = run.input.count();
   const fs::path cache = run.work / "landmarks.json";
+  const BodyStageOptions options;
   run.landmarkKey = {{"files", run.input.files},
                      {"model", s.modelPath},
                      {"up", s.sequence.up},
-                     {"unit", s.sequence.unit}};
+                     {"unit", s.sequence.unit},
+                     {"body_fit", bodyStageKey(options)}};
   run.body = {};
   run.body.landmarks.resize(n);
   if (!s.needLandmarks())
@@ -220,7 +246,7 @@ void runBodyStage(Run& run)
     BodyModel ownModel;
     const BodyModel& model = bodyModel(s.modelPath, ownModel);
     Progress progress("body-fit", n);
-    BodyStageResult result = fitBodyAndLandmarks(model, run.input.pointers(), {},
+    BodyStageResult result = fitBodyAndLandmarks(model, run.input.pointers(), options,
                                                  [&](double done)
                                                  {
                                                    progress.step(static_cast<int>(n * done));

@@ -42,6 +42,8 @@ int runSynth(const Args& args)
       "seed", po::value(&seed)->default_value(7), "random seed (body shape, capture noise)")(
       "hem", po::value(&synth.hemHeight)->default_value(0.0),
       "hem height / stature for dresses and skirts (0: preset)")(
+      "stature", po::value(&synth.stature)->default_value(0.0),
+      "height of the body in metres, e.g. 1.95 (0: random around the mean)")(
       "voxel", po::value(&capture.voxelSize)->default_value(0.015), "capture voxel size, metres")(
       "holes", po::value(&capture.holes)->default_value(0),
       "random holes per captured frame")("noise", po::value(&capture.noise)->default_value(0.0),
@@ -99,6 +101,9 @@ int runSynth(const Args& args)
       });
   progress.finish();
 
+  Points restVertices, restJoints;
+  model.shape(beta, restVertices, restJoints);
+  const double height = restVertices.col(1).maxCoeff() - restVertices.col(1).minCoeff();
   std::string betaText;
   for (Eigen::Index k = 0; k < beta.size(); ++k)
     betaText += (k ? ", " : "") + std::to_string(beta[k]);
@@ -109,6 +114,7 @@ int runSynth(const Args& args)
                       "{\n  \"preset\": \"" + synth.preset + "\",\n  \"seed\": " +
                           std::to_string(seed) + ",\n  \"fps\": " + std::to_string(synth.fps) +
                           ",\n  \"frames\": " + std::to_string(synth.frames) +
+                          ",\n  \"stature_m\": " + std::to_string(height) +
                           ",\n  \"voxel_size_m\": " + std::to_string(capture.voxelSize) +
                           ",\n  \"garment_first_vertex\": " + std::to_string(garmentOffset) +
                           ",\n  \"beta\": [" + betaText + "],\n  \"joints\": [" + joints +

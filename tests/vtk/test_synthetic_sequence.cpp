@@ -107,6 +107,21 @@ TEST(SyntheticSequence, EveryPresetRunsAndCapturesStayNearTheTruth)
   }
 }
 
+TEST(SyntheticSequence, StatureSetsTheBodysHeight)
+{
+  for (double stature : {1.52, 1.95})
+  {
+    SyntheticOptions options;
+    options.frames = 1;
+    options.stature = stature;
+    Eigen::VectorXd beta =
+        generateSyntheticSequence(builtinBodyModel(), options, [](const SyntheticFrame&) {});
+    Points vertices, joints;
+    builtinBodyModel().shape(beta, vertices, joints);
+    EXPECT_NEAR(vertices.col(1).maxCoeff() - vertices.col(1).minCoeff(), stature, 0.001);
+  }
+}
+
 TEST(SyntheticSequence, BadOptionsAreErrors)
 {
   SyntheticOptions options;
@@ -114,5 +129,8 @@ TEST(SyntheticSequence, BadOptionsAreErrors)
   EXPECT_THROW(run(options), Error);
   options.preset = "dress-walk";
   options.frames = 0;
+  EXPECT_THROW(run(options), Error);
+  options.frames = 1;
+  options.stature = 2.6; // beyond the body model's shape space
   EXPECT_THROW(run(options), Error);
 }

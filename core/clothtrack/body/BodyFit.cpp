@@ -69,6 +69,7 @@ BodyFitResult fitBodySequence(const BodyModel& model,
   BodyFitResult result;
   result.frames.resize(n);
   SequenceFitter fitter(model, options);
+  fitter.setReachTolerance(options.shapeReachTolerance);
   double done = 0.0;
   const double total = 2.0 * n + options.shapeRounds * std::max(1, options.shapeFrames);
   auto advance = [&](double amount)
@@ -158,6 +159,7 @@ BodyFitResult fitBodySequence(const BodyModel& model,
   }
   for (int i : keys) release(i);
   result.beta = fitter.samples().beta();
+  fitter.setReachTolerance(options.reachTolerance);
 
   // Pass 2: final shape, each frame from its pass-1 pose, smooth in time.
   // The poses are already close: the last stage suffices.

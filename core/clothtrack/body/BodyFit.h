@@ -66,7 +66,14 @@ struct BodyFitOptions
   double extremityPersistence = 0.13; ///< metres
   double extremityGate =
       0.35; ///< head and toes: detected and body extremities further apart are not paired
-  double handGate = 0.8;         ///< the same for the hands, which move fastest and furthest
+  double handGate = 0.8; ///< the same for the hands, which move fastest and furthest
+  /// A detected extremity pairs with a body extremity only within this multiple of the limb's
+  /// length (root joint to tip) from the root joint: tips of cloth folds are left out.
+  double reachTolerance = 1.1;
+  /// The same while the shape is still estimated (first pass and shape rounds). The mean body's
+  /// limbs are much shorter than a tall person's; with the toes refused for being out of reach,
+  /// the shape never grows to reach them (a 1.97 m person was fitted 1.65 m tall).
+  double shapeReachTolerance = 1.4;
   int headings = 8;              ///< headings tried when (re)initialising
   Vec3 up = Vec3::UnitY();       ///< up axis of the frames
   double poorDistance = 0.05;    ///< median body-to-frame distance above which a fit is poor

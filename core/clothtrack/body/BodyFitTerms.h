@@ -130,11 +130,12 @@ struct Assignments
 /// Pairs detected extremities with the body's (head top, hands, toes) by proximity under the
 /// current estimate, each used at most once. A detection is a candidate for a label only within
 /// the gate and within reach of the joint the extremity hangs from (a hand cannot be further
-/// from its shoulder than the arm is long): tips of cloth folds or of merged parts are left out.
+/// from its shoulder than reachTolerance times the arm's length): tips of cloth folds or of
+/// merged parts are left out.
 inline void matchExtremities(const Points& p, const BodySamples& samples,
                              const std::array<Vec3, kNumExtremities>& roots,
                              const std::vector<Vec3>& detected, double gate, double handGate,
-                             std::array<int, 5>& match)
+                             double reachTolerance, std::array<int, 5>& match)
 {
   match.fill(-1);
   std::array<int, 5> current;
@@ -159,7 +160,8 @@ inline void matchExtremities(const Points& p, const BodySamples& samples,
       const double distance = (detected[d] - body).norm();
       const bool hand = label == 1 || label == 2;
       if (distance > (hand ? std::max(gate, handGate) : gate)) continue;
-      if ((detected[d] - roots[label]).norm() > 1.1 * samples.reach()[label] + 0.03) continue;
+      if ((detected[d] - roots[label]).norm() > reachTolerance * samples.reach()[label] + 0.03)
+        continue;
       used[d] = true;
       current[label] = static_cast<int>(d);
       search(label + 1, count + 1, cost + distance);

@@ -16,11 +16,14 @@ class SequenceFitter
 public:
   SequenceFitter(const BodyModel& model, const BodyFitOptions& options)
       : options_(options), samples_(model, options.samples),
-        priorWeights_(jointPriorWeights(options))
+        priorWeights_(jointPriorWeights(options)), reachTolerance_(options.reachTolerance)
   {
   }
 
   BodySamples& samples() { return samples_; }
+
+  /// Multiple of a limb's length within which a detected extremity may hang from its root.
+  void setReachTolerance(double tolerance) { reachTolerance_ = tolerance; }
 
   /// Weight of the temporal prior on rotation parameter k: the root's is the lighter one.
   double temporalWeight(int k) const
@@ -63,7 +66,7 @@ public:
     {
       std::array<int, 5> match;
       matchExtremities(p, samples_, samples_.extremityRoots(pose), frame.extremities, gate,
-                       options_.handGate, match);
+                       options_.handGate, reachTolerance_, match);
       for (int label = 0; label < kNumExtremities; ++label)
         if (match[label] >= 0) ++a.matchedExtremities;
       for (int label = 0; label < kNumExtremities; ++label)
@@ -382,6 +385,7 @@ private:
   const BodyFitOptions& options_;
   BodySamples samples_;
   Eigen::VectorXd priorWeights_; ///< per rotation parameter
+  double reachTolerance_;
 };
 
 inline std::string frameProblem(const TriangleMesh* frame)
