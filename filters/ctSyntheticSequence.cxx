@@ -59,9 +59,6 @@ const std::vector<std::string>& syntheticMarkerNames()
   return names;
 }
 
-namespace
-{
-/// Rest-pose height of the body of shape beta (extent along y, the model's up axis).
 double restHeight(const BodyModel& model, const Eigen::VectorXd& beta)
 {
   Points vertices, joints;
@@ -69,6 +66,8 @@ double restHeight(const BodyModel& model, const Eigen::VectorXd& beta)
   return vertices.col(1).maxCoeff() - vertices.col(1).minCoeff();
 }
 
+namespace
+{
 /// Sets beta[0], the component that carries stature, so that the body is `stature` tall
 /// (bisection: the height grows with beta[0]).
 void setStature(const BodyModel& model, double stature, Eigen::VectorXd& beta)

@@ -101,9 +101,6 @@ int runSynth(const Args& args)
       });
   progress.finish();
 
-  Points restVertices, restJoints;
-  model.shape(beta, restVertices, restJoints);
-  const double height = restVertices.col(1).maxCoeff() - restVertices.col(1).minCoeff();
   std::string betaText;
   for (Eigen::Index k = 0; k < beta.size(); ++k)
     betaText += (k ? ", " : "") + std::to_string(beta[k]);
@@ -114,7 +111,7 @@ int runSynth(const Args& args)
                       "{\n  \"preset\": \"" + synth.preset + "\",\n  \"seed\": " +
                           std::to_string(seed) + ",\n  \"fps\": " + std::to_string(synth.fps) +
                           ",\n  \"frames\": " + std::to_string(synth.frames) +
-                          ",\n  \"stature_m\": " + std::to_string(height) +
+                          ",\n  \"stature_m\": " + std::to_string(restHeight(model, beta)) +
                           ",\n  \"voxel_size_m\": " + std::to_string(capture.voxelSize) +
                           ",\n  \"garment_first_vertex\": " + std::to_string(garmentOffset) +
                           ",\n  \"beta\": [" + betaText + "],\n  \"joints\": [" + joints +
