@@ -199,7 +199,8 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
   for (const BodyFitStage& st : f.stages)
     stages.push_back(
         {st.landmarkWeight, st.nearestWeight, st.insideWeight, st.iterations, st.searchRadius});
-  return {{"stages", stages},
+  return {{"revision", kBodyFitRevision},
+          {"stages", stages},
           {"weights",
            {f.temporalWeight, f.rootTemporalWeight, f.posePriorWeight, f.hingeStiffness,
             f.shapePriorWeight}},
@@ -209,7 +210,7 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
           {"extremities",
            {f.extremityPersistence, f.extremityGate, f.handGate, f.reachTolerance,
             f.shapeReachTolerance}},
-          {"headings", f.headings},
+          {"headings", {f.headings, f.headingAmbiguity}},
           {"judge", {f.poorDistance, f.insideTolerance, f.poorInside}},
           {"transfer", {o.transfer.outsideTolerance, o.transfer.insideTolerance}}};
 }

@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
+#include <memory>
 
 namespace clothtrack
 {
@@ -59,82 +61,112 @@ std::vector<int> bodyExtremityVertices(const BodyModel& model)
   return out;
 }
 
-BodyFitResult fitBodySequence(const BodyModel& model,
-                              const std::vector<const TriangleMesh*>& frames,
-                              const BodyFitOptions& options, const StageProgress& progress)
+namespace
 {
-  if (model.numVertices() == 0) throw Error("body fit: the body model is empty");
-  if (options.stages.empty()) throw Error("body fit: no stage in the weight schedule");
-  const int n = static_cast<int>(frames.size());
-  BodyFitResult result;
-  result.frames.resize(n);
-  SequenceFitter fitter(model, options);
-  fitter.setReachTolerance(options.shapeReachTolerance);
-  double done = 0.0;
-  const double total = 2.0 * n + options.shapeRounds * std::max(1, options.shapeFrames);
-  auto advance = [&](double amount)
+/// The frames' surfaces, built when first needed and released after use. A frame's detected
+/// extremities are kept, so that building its surface again does not detect them again.
+class FrameSurfaces
+{
+public:
+  FrameSurfaces(const std::vector<const TriangleMesh*>& frames, double persistence)
+      : frames_(frames), persistence_(persistence), surfaces_(frames.size()),
+        detected_(frames.size()), known_(frames.size(), false)
   {
-    done += amount;
-    if (progress && !progress(std::min(1.0, done / total))) throw Error("body fit: cancelled");
-  };
+  }
 
-  // Frames that can be fitted at all.
-  std::vector<std::unique_ptr<FrameSurface>> surfaces(n);
+  const FrameSurface& get(int i)
+  {
+    if (!surfaces_[i])
+    {
+      surfaces_[i] = std::make_unique<FrameSurface>(*frames_[i], persistence_,
+                                                    known_[i] ? &detected_[i] : nullptr);
+      detected_[i] = surfaces_[i]->extremities;
+      known_[i] = true;
+    }
+    return *surfaces_[i];
+  }
+
+  void release(int i) { surfaces_[i].reset(); }
+
+private:
+  const std::vector<const TriangleMesh*>& frames_;
+  double persistence_;
+  std::vector<std::unique_ptr<FrameSurface>> surfaces_;
+  std::vector<std::vector<Vec3>> detected_;
+  std::vector<bool> known_;
+};
+
+/// Progress over the fit's units of work (a frame of a pass, a key frame of a shape round).
+class FitProgress
+{
+public:
+  FitProgress(const StageProgress& progress, double total) : progress_(progress), total_(total) {}
+
+  void advance(double amount)
+  {
+    done_ += amount;
+    if (progress_ && !progress_(std::min(1.0, done_ / total_))) throw Error("body fit: cancelled");
+  }
+
+private:
+  const StageProgress& progress_;
+  double total_;
+  double done_ = 0.0;
+};
+
+/// Indices of the frames that can be fitted at all; the others are marked failed.
+std::vector<int> usableFrames(const std::vector<const TriangleMesh*>& frames,
+                              std::vector<BodyFrameFit>& fits)
+{
   std::vector<int> usable;
-  for (int i = 0; i < n; ++i)
+  for (size_t i = 0; i < frames.size(); ++i)
   {
     const std::string problem = frameProblem(frames[i]);
-    if (!problem.empty())
+    if (problem.empty())
+      usable.push_back(static_cast<int>(i));
+    else
     {
-      result.frames[i].status = BodyFitStatus::Failed;
-      result.frames[i].message = problem;
-      continue;
+      fits[i].status = BodyFitStatus::Failed;
+      fits[i].message = problem;
     }
-    usable.push_back(i);
   }
   if (usable.empty()) throw Error("body fit: no frame can be fitted (all empty or corrupt)");
-  auto surface = [&](int i) -> const FrameSurface&
-  {
-    if (!surfaces[i])
-      surfaces[i] = std::make_unique<FrameSurface>(*frames[i], options.extremityPersistence,
-                                                   result.frames[i].extremitiesDetected >= 0 &&
-                                                           !result.frames[i].extremities.empty()
-                                                       ? &result.frames[i].extremities
-                                                       : nullptr);
-    return *surfaces[i];
-  };
-  auto release = [&](int i) { surfaces[i].reset(); };
+  return usable;
+}
 
-  // Pass 1: mean shape, each frame from its neighbour.
+/// Pass 1: the mean shape, each frame from its neighbour's pose, the first from the most
+/// plausible heading.
+void firstPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
+               const BodyFitOptions& options, std::vector<BodyFrameFit>& fits,
+               FitProgress& progress)
+{
+  const BodyFrameFit start = fitter.initialFit(surfaces.get(usable.front()));
   const BodyPose* previous = nullptr;
   for (int i : usable)
   {
-    const FrameSurface& s = surface(i);
-    BodyFrameFit& fit = result.frames[i];
-    fit.extremities = s.extremities;
-    fit.extremitiesDetected = static_cast<int>(s.extremities.size());
+    const FrameSurface& s = surfaces.get(i);
+    BodyFrameFit& fit = fits[i];
     if (previous)
       fitter.fitFrame(s, *previous, previous, options.stages, fit);
     else
-    {
-      const BodyFrameFit first = fitter.initialFit(s);
-      fit.pose = first.pose;
-      fit.energy = first.energy;
-      fit.extremitiesMatched = first.extremitiesMatched;
-      fit.status = first.status;
-      fit.message = first.message;
-      fit.medianDistance = first.medianDistance;
-      fit.insideFraction = first.insideFraction;
-    }
+      fit = start;
+    fit.extremities = s.extremities;
+    fit.extremitiesDetected = static_cast<int>(s.extremities.size());
     previous = &fit.pose;
-    release(i);
-    advance(1.0);
+    surfaces.release(i);
+    progress.advance(1.0);
   }
+}
 
-  // Shape on key frames spread over the sequence, preferring well-fitted ones.
+/// Beta on key frames spread over the sequence (well-fitted ones first), alternating with
+/// their poses.
+void fitShape(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
+              const BodyFitOptions& options, const std::vector<BodyFrameFit>& fits,
+              FitProgress& progress)
+{
   std::vector<int> candidates;
   for (int i : usable)
-    if (result.frames[i].status == BodyFitStatus::Ok) candidates.push_back(i);
+    if (fits[i].status == BodyFitStatus::Ok) candidates.push_back(i);
   if (candidates.empty()) candidates = usable;
   const int numKeys = std::min<int>(std::max(1, options.shapeFrames), candidates.size());
   std::vector<int> keys;
@@ -144,8 +176,8 @@ BodyFitResult fitBodySequence(const BodyModel& model,
   std::vector<BodyPose> keyPoses;
   for (int i : keys)
   {
-    keySurfaces.push_back(&surface(i));
-    keyPoses.push_back(result.frames[i].pose);
+    keySurfaces.push_back(&surfaces.get(i));
+    keyPoses.push_back(fits[i].pose);
   }
   const std::vector<BodyFitStage> refine(options.stages.end() - 1, options.stages.end());
   for (int round = 0; round < options.shapeRounds; ++round)
@@ -154,35 +186,61 @@ BodyFitResult fitBodySequence(const BodyModel& model,
     for (size_t k = 0; k < keys.size(); ++k)
     {
       fitter.fitPose(*keySurfaces[k], keyPoses[k], nullptr, refine, options.extremityGate);
-      advance(1.0);
+      progress.advance(1.0);
     }
   }
-  for (int i : keys) release(i);
-  result.beta = fitter.samples().beta();
-  fitter.setReachTolerance(options.reachTolerance);
+  for (int i : keys) surfaces.release(i);
+}
 
-  // Pass 2: final shape, each frame from its pass-1 pose, smooth in time.
-  // The poses are already close: the last stage suffices.
+/// Pass 2: the final shape, each frame from its pass-1 pose, smooth in time. The poses are
+/// already close: the last stage suffices.
+void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
+               const BodyFitOptions& options, std::vector<BodyFrameFit>& fits,
+               FitProgress& progress)
+{
   const std::vector<BodyFitStage> finalStages(options.stages.end() - 1, options.stages.end());
-  previous = nullptr;
+  const BodyPose* previous = nullptr;
   for (int i : usable)
   {
-    const FrameSurface& s = surface(i);
-    BodyFrameFit& fit = result.frames[i];
-    fitter.fitFrame(s, fit.pose, previous, finalStages, fit);
+    BodyFrameFit& fit = fits[i];
+    fitter.fitFrame(surfaces.get(i), fit.pose, previous, finalStages, fit);
     if (fit.status == BodyFitStatus::Poor && fit.message.empty()) fit.message = "poor fit";
     previous = &fit.pose;
-    release(i);
-    advance(1.0);
+    surfaces.release(i);
+    progress.advance(1.0);
   }
+}
+} // namespace
+
+BodyFitResult fitBodySequence(const BodyModel& model,
+                              const std::vector<const TriangleMesh*>& frames,
+                              const BodyFitOptions& options, const StageProgress& progress)
+{
+  if (model.numVertices() == 0) throw Error("body fit: the body model is empty");
+  if (options.stages.empty()) throw Error("body fit: no stage in the weight schedule");
+  const int n = static_cast<int>(frames.size());
+  BodyFitResult result;
+  result.frames.resize(n);
+  const std::vector<int> usable = usableFrames(frames, result.frames);
+  FitProgress fitProgress(progress,
+                          2.0 * n + options.shapeRounds * std::max(1, options.shapeFrames));
+  FrameSurfaces surfaces(frames, options.extremityPersistence);
+  SequenceFitter fitter(model, options);
+
+  fitter.setReachTolerance(options.shapeReachTolerance);
+  firstPass(fitter, surfaces, usable, options, result.frames, fitProgress);
+  fitShape(fitter, surfaces, usable, options, result.frames, fitProgress);
+  result.beta = fitter.samples().beta();
+  fitter.setReachTolerance(options.reachTolerance);
+  finalPass(fitter, surfaces, usable, options, result.frames, fitProgress);
 
   // Frames that could not be fitted take their nearest fitted neighbour's pose.
   for (int i = 0; i < n; ++i)
   {
     if (result.frames[i].status != BodyFitStatus::Failed) continue;
-    int nearest = -1;
+    int nearest = usable.front();
     for (int j : usable)
-      if (nearest < 0 || std::abs(j - i) < std::abs(nearest - i)) nearest = j;
+      if (std::abs(j - i) < std::abs(nearest - i)) nearest = j;
     result.frames[i].pose = result.frames[nearest].pose;
   }
   return result;

@@ -18,11 +18,12 @@
 // inside term is raised last, when the body is close enough for the inside/outside sign of
 // the closest point to be right.
 //
-// Initialisation is automatic: the first frame tries several headings about the up axis, each
-// frame then starts from its neighbour's result; a frame whose fit looks poor is retried from
-// all headings (the person may have turned quickly) and the better result kept.
-// The shape is estimated on evenly spread key frames alternating with their poses, then every
-// frame is fitted again with the final shape.
+// Initialisation is automatic: the first frame tries several headings about the up axis and
+// keeps the closest fit (between facings that fit about as closely, the one whose joints bend
+// least against their range), each frame then starts from its neighbour's result; a frame whose fit
+// looks poor is retried from all headings (the person may have turned quickly) and the better
+// result kept. The shape is estimated on evenly spread key frames alternating with their poses,
+// then every frame is fitted again with the final shape.
 #include "BodyModel.h"
 
 #include <clothtrack/base/Progress.h>
@@ -74,12 +75,19 @@ struct BodyFitOptions
   /// limbs are much shorter than a tall person's; with the toes refused for being out of reach,
   /// the shape never grows to reach them (a 1.97 m person was fitted 1.65 m tall).
   double shapeReachTolerance = 1.4;
-  int headings = 8;              ///< headings tried when (re)initialising
+  int headings = 8; ///< headings tried when (re)initialising
+  /// First-frame fits facing more than 90 degrees apart whose scores are within this factor are
+  /// told apart by the pose prior (front and back look alike under loose clothing).
+  double headingAmbiguity = 1.1;
   Vec3 up = Vec3::UnitY();       ///< up axis of the frames
   double poorDistance = 0.05;    ///< median body-to-frame distance above which a fit is poor
   double insideTolerance = 0.02; ///< a body sample this far outside still counts as inside
   double poorInside = 0.75;      ///< fraction of the body inside the frame below which it is poor
 };
+
+/// Changes whenever the fit's results change for the same options, so that results cached by an
+/// older release are not reused.
+inline constexpr int kBodyFitRevision = 2;
 
 enum class BodyFitStatus : int
 {

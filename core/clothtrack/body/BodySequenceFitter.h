@@ -7,7 +7,9 @@
 
 #include <Eigen/Cholesky>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 namespace clothtrack::bodyfit
 {
@@ -214,11 +216,25 @@ public:
     return total / ns + extremities.energy(p);
   }
 
+  /// How well and how plausibly a pose explains a frame: the score plus the pose prior and the
+  /// knees' bending limit.
+  double plausibility(const FrameSurface& frame, const BodyPose& pose) const
+  {
+    return score(frame, pose) + regulariser(toVector(pose), nullptr);
+  }
+
+  /// A fit from one start, with its score.
+  struct RankedFit
+  {
+    double score;
+    BodyFrameFit fit;
+  };
+
   /// Tries every heading about the up axis, the body centred on the frame and moved rigidly;
   /// then fits fully from the best heading and from those a quarter, half and three quarters
   /// of a turn away (front and back are hard to tell apart under wide clothing: the limbs must
-  /// settle before the feet and arms reveal the facing) and keeps the best.
-  BodyFrameFit initialFit(const FrameSurface& frame)
+  /// settle before the feet and arms reveal the facing). Returns those fits, best score first.
+  std::vector<RankedFit> initialFits(const FrameSurface& frame)
   {
     const int headings = std::max(1, options_.headings);
     const std::vector<BodyFitStage> quick = {{1.0, 0.1, 0.0, 4, 0.4}, {0.3, 1.0, 1.0, 4, 0.15}};
@@ -245,8 +261,7 @@ public:
       if (std::find(candidates.begin(), candidates.end(), h) == candidates.end())
         candidates.push_back(h);
     }
-    BodyFrameFit chosen;
-    double chosenScore = std::numeric_limits<double>::infinity();
+    std::vector<RankedFit> fits;
     for (int h : candidates)
     {
       BodyFrameFit fit;
@@ -254,10 +269,29 @@ public:
       fit.energy = fitPose(frame, fit.pose, nullptr, options_.stages, options_.extremityGate,
                            &fit.extremitiesMatched);
       measure(frame, fit);
-      const double s = score(frame, fit.pose);
-      if (s < chosenScore) chosenScore = s, chosen = fit;
+      fits.push_back({score(frame, fit.pose), fit});
     }
-    return chosen;
+    std::sort(fits.begin(), fits.end(),
+              [](const RankedFit& a, const RankedFit& b) { return a.score < b.score; });
+    return fits;
+  }
+
+  /// The best-scoring initial fit, unless a fit facing the other way scores nearly as well and
+  /// is more plausible. A body turned round can fit a loose garment about as closely, but only
+  /// with its joints bent against their range: the mean body, 20 cm too tall for a 1.52 m man
+  /// in wide trousers, fitted his first frame slightly closer facing backwards. The prior only
+  /// breaks such ties: on its own it prefers a wrong pose nearer the rest pose to a true one
+  /// that matches more extremities.
+  BodyFrameFit initialFit(const FrameSurface& frame)
+  {
+    const std::vector<RankedFit> fits = initialFits(frame);
+    for (size_t k = 1; k < fits.size(); ++k)
+      if (headingChange(fits[k].fit.pose, fits[0].fit.pose, options_.up) > 0.5 * M_PI)
+        return fits[k].score <= options_.headingAmbiguity * fits[0].score &&
+                       plausibility(frame, fits[k].fit.pose) < plausibility(frame, fits[0].fit.pose)
+                   ? fits[k].fit
+                   : fits[0].fit;
+    return fits[0].fit;
   }
 
   /// Statistics of a fitted pose: median distance and fraction of samples inside.
@@ -300,17 +334,23 @@ public:
         fitPose(frame, fit.pose, previous, stages, options_.extremityGate, &fit.extremitiesMatched);
     measure(frame, fit);
     if (fit.status == BodyFitStatus::Ok) return;
-    const BodyFrameFit retry = initialFit(frame);
-    // A fresh start must be clearly better and face roughly the same way: a body turned the
+    // A fresh start must face roughly the same way and be clearly better: a body turned the
     // other way round can fit a wide garment almost as well, and a person cannot turn round
     // between two frames.
-    if (retry.status == BodyFitStatus::Ok &&
-        headingChange(retry.pose, init, options_.up) < 0.5 * M_PI &&
-        score(frame, retry.pose) < 0.5 * score(frame, fit.pose))
+    const auto retries = initialFits(frame);
+    const RankedFit* retry = nullptr;
+    for (const RankedFit& r : retries)
+      if (r.fit.status == BodyFitStatus::Ok &&
+          headingChange(r.fit.pose, init, options_.up) < 0.5 * M_PI)
+      {
+        retry = &r;
+        break;
+      }
+    if (retry && retry->score < 0.5 * score(frame, fit.pose))
     {
-      fit.pose = retry.pose;
-      fit.energy = retry.energy;
-      fit.extremitiesMatched = retry.extremitiesMatched;
+      fit.pose = retry->fit.pose;
+      fit.energy = retry->fit.energy;
+      fit.extremitiesMatched = retry->fit.extremitiesMatched;
       measure(frame, fit);
     }
   }
