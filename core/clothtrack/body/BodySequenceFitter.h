@@ -216,13 +216,6 @@ public:
     return total / ns + extremities.energy(p);
   }
 
-  /// How well and how plausibly a pose explains a frame: the score plus the pose prior and the
-  /// knees' bending limit.
-  double plausibility(const FrameSurface& frame, const BodyPose& pose) const
-  {
-    return score(frame, pose) + regulariser(toVector(pose), nullptr);
-  }
-
   /// A fit from one start, with its score.
   struct RankedFit
   {
@@ -285,10 +278,12 @@ public:
   BodyFrameFit initialFit(const FrameSurface& frame)
   {
     const std::vector<RankedFit> fits = initialFits(frame);
+    auto plausibility = [this](const RankedFit& r)
+    { return r.score + regulariser(toVector(r.fit.pose), nullptr); };
     for (size_t k = 1; k < fits.size(); ++k)
       if (headingChange(fits[k].fit.pose, fits[0].fit.pose, options_.up) > 0.5 * M_PI)
         return fits[k].score <= options_.headingAmbiguity * fits[0].score &&
-                       plausibility(frame, fits[k].fit.pose) < plausibility(frame, fits[0].fit.pose)
+                       plausibility(fits[k]) < plausibility(fits[0])
                    ? fits[k].fit
                    : fits[0].fit;
     return fits[0].fit;
