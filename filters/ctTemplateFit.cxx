@@ -104,11 +104,11 @@ clothtrack::PosedSkeleton skeletonOf(vtkPolyData* block, const std::string& name
   return out;
 }
 
-/// The start of each frame from its fitted body (ctBodyFit output 0), `fallback` where the body
-/// is not trusted (bodyStartPrediction).
-clothtrack::StartPrediction bodyStart(vtkMultiBlockDataSet* sequence, vtkMultiBlockDataSet* bodies,
-                                      const clothtrack::TriangleMesh& templateMesh, int j,
-                                      clothtrack::StartPrediction fallback)
+/// The template posed by each frame's fitted body (ctBodyFit output 0), nothing where the body
+/// is not trusted (bodyPosedTemplate).
+clothtrack::TemplatePosedByBody posedByBody(vtkMultiBlockDataSet* sequence,
+                                            vtkMultiBlockDataSet* bodies,
+                                            const clothtrack::TriangleMesh& templateMesh, int j)
 {
   using namespace clothtrack;
   const int n = static_cast<int>(sequence->GetNumberOfBlocks());
@@ -136,7 +136,7 @@ clothtrack::StartPrediction bodyStart(vtkMultiBlockDataSet* sequence, vtkMultiBl
     fitted.templateBody.row(i) << p[0], p[1], p[2];
     for (int c = 0; c < NumJoints; ++c) fitted.weights(i, c) = weights->GetComponent(i, c);
   }
-  return bodyStartPrediction(templateMesh, j, std::move(fitted), std::move(fallback));
+  return bodyPosedTemplate(templateMesh, j, std::move(fitted));
 }
 
 vtkSmartPointer<vtkPolyData> alignedPolyData(vtkPolyData* templateData,
@@ -276,6 +276,7 @@ void addSummaryRows(vtkTable* table, const std::vector<clothtrack::FrameFit>& fi
   auto coverageColumn = namedArray<vtkDoubleArray>("CoverageDistance", n);
   auto stretchColumn = namedArray<vtkDoubleArray>("Stretch", n);
   auto foldedColumn = namedArray<vtkDoubleArray>("Folded", n);
+  auto bodyColumn = namedArray<vtkDoubleArray>("BodyDistance", n);
   auto confidenceColumn = namedArray<vtkDoubleArray>("Confidence", n);
   auto attemptsColumn = namedArray<vtkIntArray>("Attempts", n);
   for (int k = 0; k < n; ++k)
@@ -284,6 +285,7 @@ void addSummaryRows(vtkTable* table, const std::vector<clothtrack::FrameFit>& fi
     coverageColumn->SetValue(k, confidence[k].coverageDistance);
     stretchColumn->SetValue(k, confidence[k].stretch);
     foldedColumn->SetValue(k, confidence[k].folded);
+    bodyColumn->SetValue(k, confidence[k].bodyDistance >= 0 ? confidence[k].bodyDistance : NAN);
     confidenceColumn->SetValue(k, confidence[k].confidence);
     attemptsColumn->SetValue(k, fit.attempts);
     frameColumn->SetValue(k, k);
@@ -303,6 +305,7 @@ void addSummaryRows(vtkTable* table, const std::vector<clothtrack::FrameFit>& fi
         static_cast<vtkAbstractArray*>(energyColumn), static_cast<vtkAbstractArray*>(secondsColumn),
         static_cast<vtkAbstractArray*>(coverageColumn),
         static_cast<vtkAbstractArray*>(stretchColumn), static_cast<vtkAbstractArray*>(foldedColumn),
+        static_cast<vtkAbstractArray*>(bodyColumn),
         static_cast<vtkAbstractArray*>(confidenceColumn),
         static_cast<vtkAbstractArray*>(attemptsColumn)})
     table->AddColumn(column);
@@ -359,12 +362,16 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     auto* bodies = this->GetNumberOfInputConnections(3) > 0
                        ? vtkMultiBlockDataSet::GetData(inputVector[3], 0)
                        : nullptr;
-    if (bodies && this->StartFromBody)
+    // With bodies, each frame's fit is also judged against the template its body poses.
+    TemplatePosedByBody posed;
+    if (bodies)
     {
       checkOneBlockPerFrame(sequence, bodies, "template fit", "bodies");
-      hooks.start = bodyStart(sequence, bodies, templateMesh, j, std::move(hooks.start));
+      posed = posedByBody(sequence, bodies, templateMesh, j);
     }
-    if (this->RetryDoubtfulFrames) judgeFits(hooks, templateMesh);
+    if (posed && this->StartFromBody)
+      hooks.start = bodyStartPrediction(posed, std::move(hooks.start));
+    if (this->RetryDoubtfulFrames) judgeFits(hooks, templateMesh, {}, posed);
     hooks.progress = [this](double done)
     {
       this->UpdateProgress(done);
@@ -377,7 +384,8 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     // Nothing is passed on unjudged: each frame's confidence, and a warning for a doubtful one.
     std::vector<const TriangleMesh*> framePointers;
     for (const TriangleMesh& frame : frames) framePointers.push_back(&frame);
-    const SequenceQuality quality = fittedSequenceQuality(fits, templateMesh.F, framePointers, j);
+    const SequenceQuality quality =
+        fittedSequenceQuality(fits, templateMesh.F, framePointers, j, {}, posed);
     for (int k : quality.doubtfulFrames)
       vtkWarningMacro(<< "template fit: " << frameName(sequence->GetBlock(k), k)
                       << " is doubtful: " << quality.confidence[k].doubt);

@@ -32,8 +32,9 @@
  * frame's surface, metres); field data FrameIndex and TemplateFrame.
  * Output port 1: vtkTable, one row per frame: Frame, MeanSurfaceDistance, CorrespondencesUsed,
  * NearestValid, Rounds, Iterations, Energy, Seconds, and the frame's ground-truth-free
- * confidence (clothtrack/eval/FrameConfidence.h): CoverageDistance, Stretch, Folded, Confidence.
- * A doubtful frame is also a warning saying why.
+ * confidence (clothtrack/eval/FrameConfidence.h): CoverageDistance, Stretch, Folded,
+ * BodyDistance (to the template posed by the frame's body from input 3; NaN without a trusted
+ * body), Confidence. A doubtful frame is also a warning saying why.
  *
  * A corrupt frame, a correspondence block that does not match the template or non-finite
  * input is an error naming the frame; a frame without correspondence is fitted from nearest

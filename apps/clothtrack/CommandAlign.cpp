@@ -128,6 +128,9 @@ struct Run
   BodyStage body;
   int templateFrame = -1;
   std::string templateDecidedBy = "given";
+  /// The template posed by each frame's fitted body: fit starts, and their judge. Empty when
+  /// the body was not fitted.
+  TemplatePosedByBody posedByBody;
   std::vector<FrameFit> fits;
   std::vector<Eigen::VectorXd> errors;
   int verticesWithTruth = 0;
@@ -398,13 +401,15 @@ void runFitStage(Run& run, const AlignedOutput& output)
         [&](int k) -> const TriangleMesh& { return in.frames[k]; },
         [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; },
         s.prediction.predictRadius);
-  if (s.startFromBody)
+  if (static_cast<int>(run.body.body.frames.size()) == n)
   {
     BodyModel ownModel;
-    hooks.start = bodyStartPrediction(bodyModel(s.modelPath, ownModel), run.body.body,
-                                      run.templateMesh(), j, std::move(hooks.start));
+    run.posedByBody =
+        bodyPosedTemplate(bodyModel(s.modelPath, ownModel), run.body.body, run.templateMesh(), j);
   }
-  if (s.retryDoubtful) judgeFits(hooks, run.templateMesh());
+  if (s.startFromBody && run.posedByBody)
+    hooks.start = bodyStartPrediction(run.posedByBody, std::move(hooks.start));
+  if (s.retryDoubtful) judgeFits(hooks, run.templateMesh(), {}, run.posedByBody);
   hooks.resumed = [&](int k) { return output.earlier(in.frameNumber[k]); };
   BackgroundWriter writer; // finishes before what its tasks refer to goes
   hooks.fitted = [&](int k, const FrameFit& fit)
@@ -452,15 +457,18 @@ void addConfidenceMetrics(nlohmann::json& metrics, const SequenceQuality& qualit
                           const std::vector<std::string>& files)
 {
   std::vector<double> confidence, stretch, folded;
+  nlohmann::json bodyDistance = nlohmann::json::array();
   for (const FrameConfidence& c : quality.confidence)
   {
     confidence.push_back(c.confidence);
     stretch.push_back(c.stretch);
     folded.push_back(c.folded);
+    bodyDistance.push_back(c.bodyDistance >= 0 ? nlohmann::json(c.bodyDistance) : nullptr);
   }
   metrics["per_frame_confidence"] = confidence;
   metrics["per_frame_stretch"] = stretch;
   metrics["per_frame_folded"] = folded;
+  metrics["per_frame_body_distance_m"] = bodyDistance;
   nlohmann::json doubtful = nlohmann::json::array();
   for (int k : quality.doubtfulFrames)
     doubtful.push_back({{"frame", k}, {"file", files[k]}, {"doubt", quality.confidence[k].doubt}});
@@ -513,7 +521,7 @@ nlohmann::json evaluate(const Run& run)
   }
   // Without ground truth too: how well the result covers each frame, and how smoothly it moves.
   const SequenceQuality quality =
-      fittedSequenceQuality(run.fits, run.templateMesh().F, in.pointers(), j);
+      fittedSequenceQuality(run.fits, run.templateMesh().F, in.pointers(), j, {}, run.posedByBody);
   metrics["per_frame_surface_distance_m"] = quality.surfaceDistance;
   metrics["per_frame_coverage_distance_m"] = quality.coverageDistance;
   metrics["mean_surface_distance_m"] = quality.meanSurfaceDistance;

@@ -68,11 +68,15 @@ endif ()
 string(JSON confidence_count LENGTH "${metrics}" per_frame_confidence)
 string(JSON doubtful_count LENGTH "${metrics}" doubtful_frames)
 string(JSON attempts_count LENGTH "${metrics}" per_frame_fit_attempts)
+string(JSON body_count LENGTH "${metrics}" per_frame_body_distance_m)
 read_metric(confidence0 per_frame_confidence 0)
+read_metric(template_body per_frame_body_distance_m ${template})
 if (NOT confidence_count EQUAL 6 OR NOT attempts_count EQUAL 6 OR NOT doubtful_count EQUAL 0
-    OR NOT confidence0 EQUAL 1)
+    OR NOT confidence0 EQUAL 1 OR NOT body_count EQUAL 6 OR template_body STREQUAL "null"
+    OR template_body GREATER 1e-6)
   message(FATAL_ERROR "metrics.json: ${confidence_count} confidences (frame 0: ${confidence0}), "
-                      "${doubtful_count} doubtful frames")
+                      "${doubtful_count} doubtful frames, ${body_count} body distances (template "
+                      "frame: ${template_body})")
 endif ()
 
 # eval recomputes the errors of the folder from its aligned frames: the same figures.

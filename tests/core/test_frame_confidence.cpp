@@ -38,9 +38,10 @@ TEST(FrameConfidence, ARigidMotionIsNotADistortion)
 
 TEST(FrameConfidence, ATemplateCrumpledOntoTheFrameIsDoubtful)
 {
-  // A sheet folded flat like an accordion every two columns: no edge changes length and the
-  // folded sheet lies on the frame, which the folds alone reveal.
-  const TriangleMesh sheet = grid(20, 1.0);
+  // A sheet folded flat like an accordion every six columns: no edge changes length and the
+  // folded sheet lies on the frame, which the folds alone reveal. The sheet is meshed about as
+  // finely for its size as a captured body.
+  const TriangleMesh sheet = grid(60, 1.0);
   Points folded = sheet.V;
   for (Eigen::Index v = 0; v < folded.rows(); ++v)
   {
@@ -52,7 +53,7 @@ TEST(FrameConfidence, ATemplateCrumpledOntoTheFrameIsDoubtful)
   const FrameConfidence c = frameConfidence(folded, sheet, frame);
   EXPECT_NEAR(c.surfaceDistance, 0.0, 1e-12);
   EXPECT_NEAR(c.stretch, 0.0, 1e-9);
-  EXPECT_GT(c.folded, 0.1);
+  EXPECT_GT(c.folded, 4 * FrameConfidenceOptions{}.maximumFoldedFraction);
   ASSERT_TRUE(c.doubtful());
   EXPECT_EQ(c.doubt.find("folds"), 0u) << c.doubt;
   EXPECT_EQ(c.confidence, 0.0);
@@ -102,6 +103,50 @@ TEST(FrameConfidence, SequenceQualityListsTheDoubtfulFrames)
   EXPECT_EQ(q.doubtfulFrames, std::vector<int>{1});
   EXPECT_TRUE(sequenceQuality(aligned, kSphere.F, frames).confidence.empty());
   EXPECT_THROW(sequenceQuality(aligned, kSphere.F, frames, {}, 3), Error);
+}
+
+TEST(FrameConfidence, ATemplateSlidingAlongTheSurfaceIsSeenOnlyByTheBody)
+{
+  // The template turned 30 degrees about its own axis still lies on the frame, undistorted;
+  // only the body, which did not turn, says that every vertex is on the wrong place.
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(M_PI / 6, Vec3::UnitZ()).toRotationMatrix();
+  const Points slid = kSphere.V * R.transpose();
+  const ConfidenceMeter meter(kSphere);
+  const FrameConfidence unjudged = meter(slid, kSphere);
+  EXPECT_LT(unjudged.bodyDistance, 0.0); // not measured
+  EXPECT_FALSE(unjudged.doubtful()) << unjudged.doubt;
+  const FrameConfidence c = meter(slid, kSphere, -1.0, 0, &kSphere.V);
+  EXPECT_NEAR(c.surfaceDistance, 0.0, 0.002);
+  EXPECT_LT(c.coverageDistance, 0.002);
+  EXPECT_NEAR(c.stretch, 0.0, 1e-9);
+  EXPECT_EQ(c.folded, 0.0);
+  // Mean |R v - v| over the sphere: 2 r sin(15 degrees) times the mean of sin(polar angle).
+  EXPECT_NEAR(c.bodyDistance, 2 * 0.2 * std::sin(M_PI / 12) * M_PI / 4, 0.003);
+  ASSERT_TRUE(c.doubtful());
+  EXPECT_EQ(c.doubt.find("body distance"), 0u) << c.doubt;
+  // Where the body stays with the template, nothing is doubtful.
+  EXPECT_FALSE(meter(slid, kSphere, -1.0, 0, &slid).doubtful());
+  const Points fewer = kSphere.V.topRows(10);
+  EXPECT_THROW(meter(slid, kSphere, -1.0, 0, &fewer), Error);
+}
+
+TEST(FrameConfidence, SequenceQualityJudgesFramesWithATrustedBodyByIt)
+{
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(M_PI / 6, Vec3::UnitZ()).toRotationMatrix();
+  const Points slid = kSphere.V * R.transpose();
+  const std::vector<const Points*> aligned = {&kSphere.V, &slid, &slid};
+  const std::vector<const TriangleMesh*> frames = {&kSphere, &kSphere, &kSphere};
+  // Frame 1's body did not turn; frame 2's body is not trusted.
+  const TemplatePosedByBody posed = [](int k) -> std::optional<Points>
+  {
+    if (k == 2) return std::nullopt;
+    return kSphere.V;
+  };
+  const SequenceQuality q = sequenceQuality(aligned, kSphere.F, frames, {}, 0, {}, posed);
+  EXPECT_EQ(q.doubtfulFrames, std::vector<int>{1});
+  EXPECT_NEAR(q.confidence[0].bodyDistance, 0.0, 1e-12);
+  EXPECT_LT(q.confidence[2].bodyDistance, 0.0);
+  EXPECT_TRUE(sequenceQuality(aligned, kSphere.F, frames, {}, 0).doubtfulFrames.empty());
 }
 
 TEST(FrameConfidence, MismatchedVertexCountsAreAnError)

@@ -48,6 +48,11 @@ class AlignTest(unittest.TestCase):
         self.assertEqual(len(m["per_frame_confidence"]), FRAMES)
         self.assertEqual(m["doubtful_frames"], [])
         self.assertEqual(m["per_frame_fit_attempts"], [1] * FRAMES)
+        # ... and against the template its fitted body poses: the template frame is that template.
+        body = m["per_frame_body_distance_m"]
+        self.assertEqual(len(body), FRAMES)
+        self.assertLess(body[result.template_frame], 1e-6)
+        self.assertLess(max(d for d in body if d is not None), 0.055)
         others = np.delete(result.errors, result.template_frame, axis=0)
         self.assertAlmostEqual(m["mean_vertex_error_m"], np.nanmean(others), places=9)
         # At the template frame only the capture's own deviation from the truth remains (measured 0.6 cm

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <unordered_map>
 
 namespace clothtrack
@@ -25,6 +26,14 @@ enum class Shown
   Percent,
   Number
 };
+
+/// The angle between two directions, radians; nullopt when either is zero.
+std::optional<double> angleBetween(const Vec3& a, const Vec3& b)
+{
+  const double scale = a.norm() * b.norm();
+  if (!(scale > 0)) return std::nullopt;
+  return std::acos(std::clamp(a.dot(b) / scale, -1.0, 1.0));
+}
 
 std::string show(double value, Shown shown)
 {
@@ -59,13 +68,24 @@ ConfidenceMeter::ConfidenceMeter(const TriangleMesh& templateMesh,
       else
         edges_[it->second].right = f;
     }
+  const Points sides = sideDirections(T);
   for (Edge& e : edges_)
-    if (e.right >= 0)
-    {
-      const Vec3 n0 = faceNormal(T, F, e.left), n1 = faceNormal(T, F, e.right);
-      const double scale = n0.norm() * n1.norm();
-      e.angle = scale > 0 ? std::acos(std::clamp(n0.dot(n1) / scale, -1.0, 1.0)) : 0.0;
-    }
+    if (e.right >= 0) e.angle = angleBetween(sides.row(e.left), sides.row(e.right)).value_or(0.0);
+}
+
+Points ConfidenceMeter::sideDirections(const Points& positions) const
+{
+  Points cornerNormals = Points::Zero(vertices_, 3);
+  for (int f = 0; f < faces_.rows(); ++f)
+  {
+    const Vec3 n = faceNormal(positions, faces_, f);
+    for (int c = 0; c < 3; ++c) cornerNormals.row(faces_(f, c)) += n;
+  }
+  Points sides(faces_.rows(), 3);
+  for (int f = 0; f < faces_.rows(); ++f)
+    sides.row(f) = cornerNormals.row(faces_(f, 0)) + cornerNormals.row(faces_(f, 1)) +
+                   cornerNormals.row(faces_(f, 2));
+  return sides;
 }
 
 void ConfidenceMeter::measureDistortion(const Points& aligned, FrameConfidence& confidence) const
@@ -73,6 +93,7 @@ void ConfidenceMeter::measureDistortion(const Points& aligned, FrameConfidence& 
   if (aligned.rows() != vertices_)
     throw Error("Frame confidence: " + std::to_string(aligned.rows()) +
                 " aligned vertices for a template of " + std::to_string(vertices_) + ".");
+  const Points sides = sideDirections(aligned);
   double stretchSum = 0.0;
   int stretched = 0, interior = 0, folded = 0;
   for (const Edge& e : edges_)
@@ -84,22 +105,32 @@ void ConfidenceMeter::measureDistortion(const Points& aligned, FrameConfidence& 
       ++stretched;
     }
     if (e.right < 0) continue;
-    const Vec3 m0 = faceNormal(aligned, faces_, e.left), m1 = faceNormal(aligned, faces_, e.right);
-    const double scale = m0.norm() * m1.norm();
-    if (!(scale > 0)) continue;
+    const std::optional<double> angle = angleBetween(sides.row(e.left), sides.row(e.right));
+    if (!angle) continue;
     ++interior;
-    const double angle = std::acos(std::clamp(m0.dot(m1) / scale, -1.0, 1.0));
-    folded += angle - e.angle > M_PI / 2;
+    folded += *angle - e.angle > M_PI / 2;
   }
   confidence.stretch = stretched ? stretchSum / stretched : 0.0;
   confidence.folded = interior ? static_cast<double>(folded) / interior : 0.0;
 }
 
+void ConfidenceMeter::measureBodyDistance(const Points& aligned, const Points& posedByBody,
+                                          FrameConfidence& confidence) const
+{
+  if (posedByBody.rows() != aligned.rows())
+    throw Error("Frame confidence: the template posed by the body has " +
+                std::to_string(posedByBody.rows()) + " vertices, the aligned template " +
+                std::to_string(aligned.rows()) + ".");
+  confidence.bodyDistance = (aligned - posedByBody).rowwise().norm().mean();
+}
+
 FrameConfidence ConfidenceMeter::operator()(const Points& aligned, const TriangleMesh& frame,
-                                            double knownSurfaceDistance, int coverageSamples) const
+                                            double knownSurfaceDistance, int coverageSamples,
+                                            const Points* posedByBody) const
 {
   FrameConfidence c;
   measureDistortion(aligned, c);
+  if (posedByBody) measureBodyDistance(aligned, *posedByBody, c);
   const TriangleMesh alignedMesh{aligned, faces_};
   c.surfaceDistance = knownSurfaceDistance >= 0
                           ? knownSurfaceDistance
@@ -117,17 +148,20 @@ void judgeConfidence(FrameConfidence& c, const FrameConfidenceOptions& options)
     const char* name;
     double value, limit;
     Shown shown;
+    bool measured = true;
   };
   const Measure measures[] = {
       {"surface distance", c.surfaceDistance, options.maximumSurfaceDistance, Shown::Centimetres},
       {"coverage", c.coverageDistance, options.maximumCoverageDistance, Shown::Centimetres},
       {"stretch", c.stretch, options.maximumStretch, Shown::Number},
-      {"folds", c.folded, options.maximumFoldedFraction, Shown::Percent}};
+      {"folds", c.folded, options.maximumFoldedFraction, Shown::Percent},
+      {"body distance", c.bodyDistance, options.maximumBodyDistance, Shown::Centimetres,
+       c.bodyDistance >= 0}};
   c.severity = 0.0;
   c.doubt.clear();
   for (const Measure& m : measures)
   {
-    if (!(m.limit > 0)) continue;
+    if (!m.measured || !(m.limit > 0)) continue;
     const double ratio = m.value / m.limit;
     c.severity = std::isnan(ratio) ? INFINITY : std::max(c.severity, ratio);
     if (!(ratio <= 1.0)) // NaN is doubtful too

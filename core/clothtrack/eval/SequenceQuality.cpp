@@ -22,7 +22,8 @@ SequenceQuality sequenceQuality(const std::vector<const Points*>& aligned,
                                 const Triangles& templateFaces,
                                 const std::vector<const TriangleMesh*>& frames,
                                 const std::vector<double>& knownSurfaceDistance, int templateFrame,
-                                const FrameConfidenceOptions& options)
+                                const FrameConfidenceOptions& options,
+                                const TemplatePosedByBody& posedByBody)
 {
   const int n = static_cast<int>(aligned.size());
   if (static_cast<int>(frames.size()) != n)
@@ -51,6 +52,9 @@ SequenceQuality sequenceQuality(const std::vector<const Points*>& aligned,
         if (!judge) return;
         FrameConfidence& c = q.confidence[k];
         meter->measureDistortion(*aligned[k], c);
+        if (posedByBody)
+          if (const std::optional<Points> posed = posedByBody(k))
+            meter->measureBodyDistance(*aligned[k], *posed, c);
         c.surfaceDistance = q.surfaceDistance[k];
         c.coverageDistance = q.coverageDistance[k];
         judgeConfidence(c, options);

@@ -26,10 +26,12 @@ struct SequenceQuality
 /// `*aligned[k]`: the template's vertices (connectivity `templateFaces`) in frame k.
 /// `knownSurfaceDistance[k]`, when not negative, is frame k's surface distance as the fit
 /// already measured it (the list may be empty). With `templateFrame` (>= 0), each frame's
-/// confidence is judged too, its distortion measured from the template frame.
+/// confidence is judged too, its distortion measured from the template frame, and its distance
+/// to `posedByBody` where that gives a pose.
 SequenceQuality sequenceQuality(const std::vector<const Points*>& aligned,
                                 const Triangles& templateFaces,
                                 const std::vector<const TriangleMesh*>& frames,
                                 const std::vector<double>& knownSurfaceDistance = {},
-                                int templateFrame = -1, const FrameConfidenceOptions& options = {});
+                                int templateFrame = -1, const FrameConfidenceOptions& options = {},
+                                const TemplatePosedByBody& posedByBody = {});
 } // namespace clothtrack

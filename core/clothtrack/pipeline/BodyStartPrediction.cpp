@@ -7,33 +7,10 @@
 
 namespace clothtrack
 {
-StartPrediction bodyStartPrediction(const TriangleMesh& templateMesh, int templateFrame,
-                                    FittedBodies bodies, StartPrediction fallback)
+namespace
 {
-  const int n = static_cast<int>(bodies.skeletons.size());
-  if (static_cast<int>(bodies.trusted.size()) != n)
-    throw Error("body start: " + std::to_string(bodies.trusted.size()) + " fit flags for " +
-                std::to_string(n) + " bodies");
-  if (templateFrame < 0 || templateFrame >= n)
-    throw Error("body start: the template frame " + std::to_string(templateFrame) +
-                " has no fitted body");
-  // A doubtful body at the template frame would bind the template wrongly everywhere.
-  if (!bodies.trusted[templateFrame]) return fallback;
-  auto bound = std::make_shared<const SkinnedTemplate>(
-      templateMesh, bodies.templateBody, bodies.weights, bodies.skeletons[templateFrame]);
-  return [bound, skeletons = std::move(bodies.skeletons), trusted = std::move(bodies.trusted),
-          fallback = std::move(fallback)](int k, int from, const Points& fitOfFrom) -> Points
-  {
-    if (k < 0 || k >= static_cast<int>(skeletons.size()))
-      throw Error("body start: frame " + std::to_string(k) + " has no fitted body");
-    if (trusted[k]) return bound->posed(skeletons[k]);
-    return fallback ? fallback(k, from, fitOfFrom) : fitOfFrom;
-  };
-}
-
-StartPrediction bodyStartPrediction(const BodyModel& model, const BodyFitResult& body,
-                                    const TriangleMesh& templateMesh, int templateFrame,
-                                    StartPrediction fallback)
+/// What bodyPosedTemplate needs of a body fit result: frames whose fit is not ok are not trusted.
+FittedBodies fittedBodies(const BodyModel& model, const BodyFitResult& body, int templateFrame)
 {
   FittedBodies bodies;
   for (const BodyFrameFit& f : body.frames)
@@ -44,6 +21,66 @@ StartPrediction bodyStartPrediction(const BodyModel& model, const BodyFitResult&
   if (templateFrame >= 0 && templateFrame < static_cast<int>(body.frames.size()))
     bodies.templateBody = model.posed(body.beta, body.frames[templateFrame].pose).V;
   bodies.weights = model.weights;
-  return bodyStartPrediction(templateMesh, templateFrame, std::move(bodies), std::move(fallback));
+  return bodies;
+}
+} // namespace
+
+TemplatePosedByBody bodyPosedTemplate(const TriangleMesh& templateMesh, int templateFrame,
+                                      FittedBodies bodies)
+{
+  const int n = static_cast<int>(bodies.skeletons.size());
+  if (static_cast<int>(bodies.trusted.size()) != n)
+    throw Error("body start: " + std::to_string(bodies.trusted.size()) + " fit flags for " +
+                std::to_string(n) + " bodies");
+  if (templateFrame < 0 || templateFrame >= n)
+    throw Error("body start: the template frame " + std::to_string(templateFrame) +
+                " has no fitted body");
+  if (!bodies.trusted[templateFrame])
+    return [](int) -> std::optional<Points> { return std::nullopt; };
+  auto bound = std::make_shared<const SkinnedTemplate>(
+      templateMesh, bodies.templateBody, bodies.weights, bodies.skeletons[templateFrame]);
+  return [bound, skeletons = std::move(bodies.skeletons),
+          trusted = std::move(bodies.trusted)](int k) -> std::optional<Points>
+  {
+    if (k < 0 || k >= static_cast<int>(skeletons.size()))
+      throw Error("body start: frame " + std::to_string(k) + " has no fitted body");
+    if (!trusted[k]) return std::nullopt;
+    return bound->posed(skeletons[k]);
+  };
+}
+
+TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResult& body,
+                                      const TriangleMesh& templateMesh, int templateFrame)
+{
+  return bodyPosedTemplate(templateMesh, templateFrame, fittedBodies(model, body, templateFrame));
+}
+
+StartPrediction bodyStartPrediction(TemplatePosedByBody posed, StartPrediction fallback)
+{
+  return [posed = std::move(posed),
+          fallback = std::move(fallback)](int k, int from, const Points& fitOfFrom) -> Points
+  {
+    if (std::optional<Points> start = posed(k)) return std::move(*start);
+    return fallback ? fallback(k, from, fitOfFrom) : fitOfFrom;
+  };
+}
+
+StartPrediction bodyStartPrediction(const TriangleMesh& templateMesh, int templateFrame,
+                                    FittedBodies bodies, StartPrediction fallback)
+{
+  const bool bound = templateFrame >= 0 &&
+                     templateFrame < static_cast<int>(bodies.trusted.size()) &&
+                     bodies.trusted[templateFrame];
+  TemplatePosedByBody posed = bodyPosedTemplate(templateMesh, templateFrame, std::move(bodies));
+  if (!bound) return fallback; // a body binding nothing changes no start
+  return bodyStartPrediction(std::move(posed), std::move(fallback));
+}
+
+StartPrediction bodyStartPrediction(const BodyModel& model, const BodyFitResult& body,
+                                    const TriangleMesh& templateMesh, int templateFrame,
+                                    StartPrediction fallback)
+{
+  return bodyStartPrediction(templateMesh, templateFrame, fittedBodies(model, body, templateFrame),
+                             std::move(fallback));
 }
 } // namespace clothtrack

@@ -4,6 +4,7 @@
 // fallback says (the landmark prediction, or the neighbour's fit).
 #include <clothtrack/body/BodyFit.h>
 #include <clothtrack/body/SkinnedTemplate.h>
+#include <clothtrack/eval/FrameConfidence.h>
 #include <clothtrack/fit/SequenceFit.h>
 
 #include <vector>
@@ -20,9 +21,24 @@ struct FittedBodies
   Eigen::MatrixXd weights;
 };
 
-/// The start of frame k: the template bound to the template frame's body and posed by frame k's.
-/// Untrusted frames start from `fallback` (which may be empty: the neighbour's fit as it is);
-/// when the template frame's body is not trusted, `fallback` itself is returned.
+/// The template bound to the template frame's body and posed by frame k's; nullopt for frames
+/// whose body is not trusted, and for every frame when the template frame's body is not (a
+/// doubtful body there would bind the template wrongly everywhere). Safe to call from several
+/// threads at once. The same also judges a fit (eval/FrameConfidence.h, body distance).
+TemplatePosedByBody bodyPosedTemplate(const TriangleMesh& templateMesh, int templateFrame,
+                                      FittedBodies bodies);
+
+/// The same from a body fit result and its model (the command line): frames whose fit is not
+/// ok are not trusted.
+TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResult& body,
+                                      const TriangleMesh& templateMesh, int templateFrame);
+
+/// The start of frame k: the template posed by frame k's body. Frames without one start from
+/// `fallback` (which may be empty: the neighbour's fit as it is).
+StartPrediction bodyStartPrediction(TemplatePosedByBody posed, StartPrediction fallback);
+
+/// bodyStartPrediction(bodyPosedTemplate(templateMesh, templateFrame, bodies), fallback); when
+/// the template frame's body is not trusted, `fallback` itself is returned.
 StartPrediction bodyStartPrediction(const TriangleMesh& templateMesh, int templateFrame,
                                     FittedBodies bodies, StartPrediction fallback);
 

@@ -5,15 +5,17 @@
 namespace clothtrack
 {
 void judgeFits(SequenceFitHooks& hooks, const TriangleMesh& templateMesh,
-               const FitJudgeOptions& options)
+               const FitJudgeOptions& options, TemplatePosedByBody posedByBody)
 {
   // The template's edges are measured once; the coverage of each fit is estimated from a few
   // thousand of the frame's vertices.
   auto meter = std::make_shared<const ConfidenceMeter>(templateMesh, options.limits);
-  hooks.judge = [meter](int, const TriangleMesh& frame, const FrameFit& fit)
+  hooks.judge = [meter, posedByBody = std::move(posedByBody)](int k, const TriangleMesh& frame,
+                                                              const FrameFit& fit)
   {
     const double known = fit.surfaceDistance.size() ? fit.surfaceDistance.mean() : -1.0;
-    return (*meter)(fit.positions, frame, known, 4000).severity;
+    const std::optional<Points> posed = posedByBody ? posedByBody(k) : std::nullopt;
+    return (*meter)(fit.positions, frame, known, 4000, posed ? &*posed : nullptr).severity;
   };
   hooks.retryAbove = options.retrySeverity;
 }
@@ -21,7 +23,8 @@ void judgeFits(SequenceFitHooks& hooks, const TriangleMesh& templateMesh,
 SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
                                       const Triangles& templateFaces,
                                       const std::vector<const TriangleMesh*>& frames,
-                                      int templateFrame, const FitJudgeOptions& options)
+                                      int templateFrame, const FitJudgeOptions& options,
+                                      const TemplatePosedByBody& posedByBody)
 {
   std::vector<const Points*> aligned;
   std::vector<double> known;
@@ -30,6 +33,7 @@ SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
     aligned.push_back(&f.positions);
     known.push_back(f.surfaceDistance.size() ? f.surfaceDistance.mean() : -1.0);
   }
-  return sequenceQuality(aligned, templateFaces, frames, known, templateFrame, options.limits);
+  return sequenceQuality(aligned, templateFaces, frames, known, templateFrame, options.limits,
+                         posedByBody);
 }
 } // namespace clothtrack

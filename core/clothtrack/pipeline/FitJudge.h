@@ -18,14 +18,17 @@ struct FitJudgeOptions
   double retrySeverity = 1.5;
 };
 
-/// Sets hooks.judge (each fit's severity) and hooks.retryAbove.
+/// Sets hooks.judge (each fit's severity) and hooks.retryAbove. With `posedByBody`
+/// (pipeline/BodyStartPrediction.h), a fit far from where the frame's body carries the template
+/// is judged too.
 void judgeFits(SequenceFitHooks& hooks, const TriangleMesh& templateMesh,
-               const FitJudgeOptions& options = {});
+               const FitJudgeOptions& options = {}, TemplatePosedByBody posedByBody = {});
 
 /// The quality of a fitted sequence and each frame's confidence (eval/SequenceQuality.h), reusing
 /// the surface distances the fit measured (resumed frames have none and are measured).
 SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
                                       const Triangles& templateFaces,
                                       const std::vector<const TriangleMesh*>& frames,
-                                      int templateFrame, const FitJudgeOptions& options = {});
+                                      int templateFrame, const FitJudgeOptions& options = {},
+                                      const TemplatePosedByBody& posedByBody = {});
 } // namespace clothtrack
