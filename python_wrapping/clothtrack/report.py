@@ -3,7 +3,8 @@
 usage: python3 -m clothtrack.report OUT   (OUT holds metrics.json and aligned.pvd; needs an X
 display for the renders; without one it starts a virtual one of its own)
 
-Writes OUT/images/per_frame_error.png, cumulative_error.png, frame_NNNN.png (input frame, template,
+Writes OUT/images/per_frame_error.png, cumulative_error.png, confidence.png (each frame's
+ground-truth-free confidence and body distance, doubtful frames marked), frame_NNNN.png (input frame, template,
 result coloured by error), correspondence_NNNN.png (a colour field on the template carried to the frame),
 body_NNNN.png (the fitted body inside the frame, from OUT/body_fit.json) and OUT/report.html.
 """
@@ -229,6 +230,62 @@ def _render_body(out, metrics, k, path):
     return True
 
 
+def _confidence_plot(metrics, images):
+    """Each frame's confidence (1: every measure within its limit) and its distance to the template posed by
+    its fitted body, the doubtful frames marked; None when metrics.json has no confidence."""
+    if "per_frame_confidence" not in metrics:
+        return None
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    frames = metrics["frame_numbers"]
+    doubtful = [d["frame"] for d in metrics.get("doubtful_frames", [])]
+    fig, ax = plt.subplots(figsize=(7, 3.2), dpi=110)
+    ax.plot(frames, metrics["per_frame_confidence"], label="confidence")
+    ax.scatter([frames[k] for k in doubtful], [metrics["per_frame_confidence"][k] for k in doubtful],
+               color="red", s=12, zorder=3, label="doubtful")
+    ax.set_ylim(-0.05, 1.05)
+    ax.set_ylabel("confidence")
+    ax.set_xlabel("frame")
+    ax.grid(alpha=0.3)
+    handles, labels = ax.get_legend_handles_labels()
+    if "per_frame_body_distance_m" in metrics:
+        twin = ax.twinx()
+        line, = twin.plot(frames, [100 * d if d is not None else float("nan")
+                                   for d in metrics["per_frame_body_distance_m"]], color="grey", alpha=0.7)
+        twin.set_ylabel("body distance (cm)")
+        handles.append(line)
+        labels.append("distance to the body-posed template")
+    ax.legend(handles, labels, fontsize=8)
+    fig.tight_layout()
+    fig.savefig(images / "confidence.png")
+    plt.close(fig)
+    return "confidence.png"
+
+
+def _confidence_section(metrics, image):
+    """The doubtful and the retried frames, each with what was found and done."""
+    if "per_frame_confidence" not in metrics:
+        return []
+    doubtful = metrics.get("doubtful_frames", [])
+    retried = metrics.get("retried_frames", [])
+    parts = ["<h2>Confidence (without ground truth)</h2>",
+             "<p>%d of %d frames are doubtful; %d were fitted again from other starts.</p>"
+             % (len(doubtful), metrics["frames"], len(retried))]
+    if image:
+        parts.append('<img src="images/%s" alt="%s">' % (image, image))
+    if doubtful:
+        parts.append(_table([("frame %d" % metrics["frame_numbers"][d["frame"]],
+                              "%s: %s" % (os.path.basename(d["file"]), d["doubt"])) for d in doubtful]))
+    if retried:
+        parts.append(_table([("frame %d retried" % metrics["frame_numbers"][r["frame"]],
+                              "%d attempts, kept %s (severity %.2f)" % (r["attempts"], r["kept"], r["severity"]))
+                             for r in retried]))
+    return parts
+
+
 def _table(rows):
     cells = "".join("<tr><th>%s</th><td>%s</td></tr>" % (html.escape(k), html.escape(v)) for k, v in rows)
     return "<table>%s</table>" % cells
@@ -285,6 +342,7 @@ def write_report(out):
              ("jitter", "%.2f mm (mean vertex acceleration per frame)" % (1000 * metrics["mean_jitter_m"]))]
     body = ["<h1>ClothTrack alignment report</h1>", _table(rows), "<h2>Per frame</h2>"]
     body += ['<img src="images/%s" alt="%s">' % (p, p) for p in plots]
+    body += _confidence_section(metrics, _confidence_plot(metrics, images))
     body.append("<h2>Frames</h2>")
     shown = set()
     for k, name in renders:

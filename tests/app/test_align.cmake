@@ -15,7 +15,8 @@ expect_run(0 "wrote 6 frames" synth --preset skirt-turn --frames 6 --seed 3 -o $
 expect_run(0 "aligned 6 frames" align ${WORK}/synth/frames --ground-truth ${WORK}/synth/ground_truth
   --markers ${WORK}/synth/markers.csv -o ${WORK}/out)
 foreach (f aligned.pvd aligned/aligned_0000.vtp aligned/aligned_0005.vtp metrics.json work/landmarks.json
-         body_fit.json report.html images/per_frame_error.png images/cumulative_error.png)
+         body_fit.json report.html images/per_frame_error.png images/cumulative_error.png
+         images/confidence.png)
   if (NOT EXISTS ${WORK}/out/${f})
     message(FATAL_ERROR "align did not write ${f}")
   endif ()
@@ -23,6 +24,11 @@ endforeach ()
 file(GLOB correspondence_images ${WORK}/out/images/correspondence_*.png)
 if (NOT correspondence_images)
   message(FATAL_ERROR "the report has no correspondence image")
+endif ()
+# The report says how many frames are doubtful (this accurate result: none).
+file(STRINGS ${WORK}/out/report.html doubtful_line REGEX "0 of 6 frames are doubtful")
+if (NOT doubtful_line)
+  message(FATAL_ERROR "the report does not say that none of the 6 frames is doubtful")
 endif ()
 file(GLOB body_images ${WORK}/out/images/body_*.png)
 list(LENGTH body_images body_image_count)
