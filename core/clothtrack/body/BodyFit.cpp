@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace clothtrack
 {
@@ -70,7 +71,7 @@ class FrameSurfaces
 public:
   FrameSurfaces(const std::vector<const TriangleMesh*>& frames, double persistence)
       : frames_(frames), persistence_(persistence), surfaces_(frames.size()),
-        detected_(frames.size()), known_(frames.size(), false)
+        detected_(frames.size())
   {
   }
 
@@ -79,9 +80,8 @@ public:
     if (!surfaces_[i])
     {
       surfaces_[i] = std::make_unique<FrameSurface>(*frames_[i], persistence_,
-                                                    known_[i] ? &detected_[i] : nullptr);
+                                                    detected_[i] ? &*detected_[i] : nullptr);
       detected_[i] = surfaces_[i]->extremities;
-      known_[i] = true;
     }
     return *surfaces_[i];
   }
@@ -92,8 +92,7 @@ private:
   const std::vector<const TriangleMesh*>& frames_;
   double persistence_;
   std::vector<std::unique_ptr<FrameSurface>> surfaces_;
-  std::vector<std::vector<Vec3>> detected_;
-  std::vector<bool> known_;
+  std::vector<std::optional<std::vector<Vec3>>> detected_; ///< empty until first detected
 };
 
 /// Progress over the fit's units of work (a frame of a pass, a key frame of a shape round).
