@@ -128,6 +128,8 @@ vtkSmartPointer<vtkPolyData> fittedBodyPolyData(const clothtrack::BodyModel& mod
   clothtrack::addFieldValue(fd, clothtrack::arrays::RestPoseDistance, fromRest);
   clothtrack::addFieldValue(fd, "MedianDistance", f.medianDistance);
   clothtrack::addFieldValue(fd, "InsideFraction", f.insideFraction);
+  clothtrack::addFieldValue(fd, "FrameDistance", f.frameDistance);
+  clothtrack::addFieldValue(fd, "PreviousGap", f.previousGap);
   return bodyData;
 }
 
@@ -135,7 +137,7 @@ vtkSmartPointer<vtkPolyData> fittedBodyPolyData(const clothtrack::BodyModel& mod
 struct StatusTable
 {
   vtkNew<vtkIntArray> frame, status, detected, matched;
-  vtkNew<vtkDoubleArray> distance, inside, found, restPose;
+  vtkNew<vtkDoubleArray> distance, inside, found, restPose, frameDistance, previousGap;
 
   void add(int k, const clothtrack::BodyFrameFit& f, double foundFraction, double fromRest)
   {
@@ -147,6 +149,8 @@ struct StatusTable
     inside->InsertNextValue(f.insideFraction);
     found->InsertNextValue(foundFraction);
     restPose->InsertNextValue(fromRest);
+    frameDistance->InsertNextValue(f.frameDistance);
+    previousGap->InsertNextValue(f.previousGap);
   }
   void addTo(vtkTable* table)
   {
@@ -158,11 +162,15 @@ struct StatusTable
     inside->SetName("InsideFraction");
     found->SetName("LandmarksFound");
     restPose->SetName(clothtrack::arrays::RestPoseDistance);
+    frameDistance->SetName("FrameDistance");
+    previousGap->SetName("PreviousGap");
     for (vtkAbstractArray* column :
          {static_cast<vtkAbstractArray*>(frame), static_cast<vtkAbstractArray*>(status),
           static_cast<vtkAbstractArray*>(distance), static_cast<vtkAbstractArray*>(inside),
           static_cast<vtkAbstractArray*>(detected), static_cast<vtkAbstractArray*>(matched),
-          static_cast<vtkAbstractArray*>(found), static_cast<vtkAbstractArray*>(restPose)})
+          static_cast<vtkAbstractArray*>(found), static_cast<vtkAbstractArray*>(restPose),
+          static_cast<vtkAbstractArray*>(frameDistance),
+          static_cast<vtkAbstractArray*>(previousGap)})
       table->AddColumn(column);
   }
 };
@@ -222,10 +230,11 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
     for (Eigen::Index k = 0; k < fit.beta.size(); ++k) beta->InsertNextValue(fit.beta[k]);
     bodies->GetFieldData()->AddArray(beta);
     StatusTable table;
+    const std::vector<double> restPoses = restPoseDistances(fit);
     for (int k = 0; k < n; ++k)
     {
       const BodyFrameFit& f = fit.frames[k];
-      const double fromRest = fittedRestPoseDistance(f.status, f.pose);
+      const double fromRest = restPoses[k];
       bodies->SetBlock(k, fittedBodyPolyData(model, fit, k, fromRest));
       bodies->GetMetaData(static_cast<unsigned>(k))
           ->Set(vtkCompositeDataSet::NAME(), ("body_" + std::to_string(k)).c_str());

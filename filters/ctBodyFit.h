@@ -15,14 +15,17 @@
  * Output port 0: vtkMultiBlockDataSet, one fitted body per frame (the model's connectivity)
  * with field data FrameIndex, FitStatus (0 ok, 1 poor, 2 failed), Pose (22 axis-angle joint
  * rotations then the translation), RestPoseDistance (sum of the non-root joint angles in
- * radians, NaN unless the fit is ok), MedianDistance and InsideFraction; the collection's field
+ * radians, NaN unless the fit is ok), MedianDistance, InsideFraction, FrameDistance (mean
+ * distance from the frame to the body, m) and PreviousGap (mean surface distance to the frame
+ * before, m: above 6 cm the frame was fitted afresh as an unrelated pose); the collection's field
  * data holds ShapeCoefficients (beta).
  * Output port 1: vtkMultiBlockDataSet, the oriented landmarks of each frame (as
  * ctLandmarkTransfer: Valid, Direction, LandmarkId, LandmarkName, Offset, FrameFace,
  * FrameBarycentric; field data FoundFraction and RestPoseDistance, which lets
  * ctPatchCorrespondence choose the template by pose).
  * Output port 2: vtkTable, one row per frame: Frame, Status, MedianDistance, InsideFraction,
- * ExtremitiesDetected, ExtremitiesMatched, LandmarksFound, RestPoseDistance.
+ * ExtremitiesDetected, ExtremitiesMatched, LandmarksFound, RestPoseDistance, FrameDistance,
+ * PreviousGap.
  *
  * A frame that cannot be fitted (empty or corrupt) is flagged Failed with a warning and keeps
  * its neighbour's pose; the filter fails only when no frame can be fitted.

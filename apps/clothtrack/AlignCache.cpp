@@ -33,8 +33,7 @@ nlohmann::json bodyFitJson(const std::string& modelPath, const std::vector<std::
 {
   nlohmann::json frames = nlohmann::json::array();
   for (size_t k = 0; k < stage.body.frames.size(); ++k)
-    frames.push_back(
-        bodyFrameJson(files[k], stage.body.frames[k].status, stage.body.frames[k].pose));
+    frames.push_back(bodyFrameJson(files[k], stage.body.frames[k]));
   const Eigen::VectorXd& beta = stage.body.beta;
   return {{"model", modelPath},
           {"beta", std::vector<double>(beta.data(), beta.data() + beta.size())},
@@ -75,10 +74,7 @@ std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::
         Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
     for (const auto& frame : body.at("per_frame"))
     {
-      BodyFrameFit fit;
-      fit.pose = bodyFramePose(frame);
-      fit.status = bodyFrameStatus(frame);
-      out.body.frames.push_back(fit);
+      out.body.frames.push_back(bodyFrameFit(frame));
     }
     for (const auto& frame : j.at("landmarks"))
     {

@@ -6,7 +6,9 @@
 #include "ctBuiltinBodyModel.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 
 namespace clothtrack::app
 {
@@ -34,20 +36,27 @@ BodyFitResult fitBodiesWithProgress(const BodyModel& model,
   return result;
 }
 
-nlohmann::json bodyFrameJson(const std::string& file, BodyFitStatus status, const BodyPose& pose)
+nlohmann::json bodyFrameJson(const std::string& file, const BodyFrameFit& fit)
 {
+  const BodyPose& pose = fit.pose;
   nlohmann::json rotations = nlohmann::json::array();
   for (int j = 0; j < NumJoints; ++j)
     rotations.push_back({pose.rotations(j, 0), pose.rotations(j, 1), pose.rotations(j, 2)});
-  const double fromRest = fittedRestPoseDistance(status, pose);
+  const double fromRest = fittedRestPoseDistance(fit.status, pose);
   return {
       {"file", file},
-      {"status", bodyFitStatusName(status)},
+      {"status", bodyFitStatusName(fit.status)},
+      {"message", fit.message},
       {"rotations", rotations},
       {"translation", {pose.translation.x(), pose.translation.y(), pose.translation.z()}},
-      {"rest_pose_distance", std::isnan(fromRest) ? nlohmann::json() : nlohmann::json(fromRest)}};
+      {"rest_pose_distance", std::isnan(fromRest) ? nlohmann::json() : nlohmann::json(fromRest)},
+      {"frame_distance_m", fit.frameDistance},
+      {"previous_gap_m", fit.previousGap},
+      {"continues_previous", fit.continuesPrevious}};
 }
 
+namespace
+{
 BodyFitStatus bodyFrameStatus(const nlohmann::json& record)
 {
   const std::string name = record.at("status").get<std::string>();
@@ -65,5 +74,35 @@ BodyPose bodyFramePose(const nlohmann::json& record)
     for (int c = 0; c < 3; ++c) pose.rotations(j, c) = rotations.at(j).at(c).get<double>();
   for (int c = 0; c < 3; ++c) pose.translation[c] = record.at("translation").at(c).get<double>();
   return pose;
+}
+} // namespace
+
+BodyFrameFit bodyFrameFit(const nlohmann::json& record)
+{
+  BodyFrameFit fit;
+  fit.pose = bodyFramePose(record);
+  fit.status = bodyFrameStatus(record);
+  fit.message = record.value("message", std::string());
+  fit.frameDistance = record.value("frame_distance_m", 0.0);
+  fit.previousGap = record.value("previous_gap_m", 0.0);
+  fit.continuesPrevious = record.value("continues_previous", true);
+  return fit;
+}
+
+void warnAboutDiscontinuities(const BodyFitResult& body, double limit)
+{
+  std::vector<int> frames;
+  for (size_t k = 0; k < body.frames.size(); ++k)
+    if (!body.frames[k].continuesPrevious) frames.push_back(static_cast<int>(k));
+  if (frames.empty()) return;
+  std::string list;
+  for (size_t i = 0; i < frames.size() && i < 8; ++i)
+    list += (i ? ", " : "") + std::to_string(frames[i]);
+  if (frames.size() > 8) list += ", ...";
+  std::fprintf(stderr,
+               "warning: %zu of %zu frames lie more than %.0f cm from the frame before them "
+               "(%s): each was also fitted from the poses of earlier frames "
+               "(body_fit.json: previous_gap_m)\n",
+               frames.size(), body.frames.size(), 100.0 * limit, list.c_str());
 }
 } // namespace clothtrack::app

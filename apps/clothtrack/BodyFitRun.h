@@ -19,9 +19,13 @@ BodyFitResult fitBodiesWithProgress(const BodyModel& model,
                                     const BodyFitOptions& options = {});
 
 /// One frame of a body_fit.json ('clothtrack body-fit', 'clothtrack align'): file, status name,
-/// joint rotations, translation and rest_pose_distance (null unless the fit is ok).
-nlohmann::json bodyFrameJson(const std::string& file, BodyFitStatus status, const BodyPose& pose);
-/// The status and pose of such a record; throws std::exception when it is not one.
-BodyFitStatus bodyFrameStatus(const nlohmann::json& record);
-BodyPose bodyFramePose(const nlohmann::json& record);
+/// joint rotations, translation, rest_pose_distance (null unless the fit is ok),
+/// frame_distance_m, previous_gap_m and continues_previous.
+nlohmann::json bodyFrameJson(const std::string& file, const BodyFrameFit& fit);
+/// The fit such a record describes (status, pose, message and the figures above, where
+/// present); throws std::exception when it is not one.
+BodyFrameFit bodyFrameFit(const nlohmann::json& record);
+/// Warns when frames do not continue the frame before them (BodyFitOptions::neighbourGap, in
+/// metres as `limit`): a cut, a gap in the capture, or a collection of unrelated poses.
+void warnAboutDiscontinuities(const BodyFitResult& body, double limit);
 } // namespace clothtrack::app

@@ -215,6 +215,7 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
             f.shapeReachTolerance}},
           {"headings", {f.headings, f.headingAmbiguity}},
           {"judge", {f.poorDistance, f.insideTolerance, f.poorInside}},
+          {"continuity", {f.neighbourGap, f.unexplainedRatio, f.unexplainedMargin}},
           {"transfer", {o.transfer.outsideTolerance, o.transfer.insideTolerance}}};
 }
 
@@ -264,6 +265,7 @@ void runBodyStage(Run& run)
   }
   writeTextAtomically((run.out / "body_fit.json").string(),
                       bodyFitJson(s.modelPath, run.input.files, run.body).dump(1) + "\n");
+  warnAboutDiscontinuities(run.body.body, options.fit.neighbourGap);
   for (int k = 0; k < n; ++k)
     if (run.body.landmarks[k].empty())
       std::fprintf(stderr,

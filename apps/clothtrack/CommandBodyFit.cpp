@@ -166,9 +166,8 @@ BodyFitTotals writeFrames(const BodyFitSettings& s, const BodyModel& model,
                    bodyFitStatusName(f.status), f.message.empty() ? "" : ": ", f.message.c_str());
     nlohmann::json extremities = nlohmann::json::array();
     for (const Vec3& e : f.extremities) extremities.push_back({e.x(), e.y(), e.z()});
-    nlohmann::json record = bodyFrameJson(files[k], f.status, f.pose);
-    record.update({{"message", f.message},
-                   {"median_distance_m", f.medianDistance},
+    nlohmann::json record = bodyFrameJson(files[k], f);
+    record.update({{"median_distance_m", f.medianDistance},
                    {"inside_fraction", insideFractions[k]},
                    {"samples_inside_within_2cm", f.insideFraction},
                    {"extremities_detected", f.extremitiesDetected},
@@ -220,6 +219,7 @@ int runBodyFit(const Args& args)
   }
   const BodyFitResult& result = stage.body;
   const double fitSeconds = secondsSince(fitStart);
+  warnAboutDiscontinuities(result, s.stage.fit.neighbourGap);
 
   fs::create_directories(s.output);
   const BodyFitTotals totals = writeFrames(s, model, files, frames, stage);

@@ -47,17 +47,13 @@ std::vector<double> readRestPoseDistances(const std::string& path,
     if (perFrame.size() != frames.size())
       throw UsageError{path + ": " + std::to_string(perFrame.size()) + " frames, the input has " +
                        std::to_string(frames.size())};
-    std::vector<double> out;
-    for (const auto& f : perFrame)
-    {
-      const auto& d = f.at("rest_pose_distance");
-      out.push_back(d.is_number() ? d.get<double>() : NAN);
-    }
-    return out;
+    BodyFitResult body;
+    for (const auto& f : perFrame) body.frames.push_back(bodyFrameFit(f));
+    return restPoseDistances(body);
   }
-  catch (const nlohmann::json::exception& e)
+  catch (const std::exception& e)
   {
-    throw UsageError{path + ": not a body_fit.json with rest_pose_distance (" + e.what() + ")"};
+    throw UsageError{path + ": not a body_fit.json with each frame's pose (" + e.what() + ")"};
   }
 }
 

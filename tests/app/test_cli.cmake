@@ -84,6 +84,13 @@ string(JSON status GET "${summary}" per_frame 1 status)
 if (found LESS 0.7 OR NOT status STREQUAL "ok")
   message(FATAL_ERROR "body-fit: landmarks found ${found}, frame 1 status ${status}")
 endif ()
+# Consecutive frames of a capture continue each other; the body explains its frame within cm.
+string(JSON gap GET "${summary}" per_frame 1 previous_gap_m)
+string(JSON continues GET "${summary}" per_frame 1 continues_previous)
+string(JSON unexplained GET "${summary}" per_frame 1 frame_distance_m)
+if (NOT gap GREATER 0 OR NOT gap LESS 0.06 OR NOT continues OR NOT unexplained GREATER 0.005 OR NOT unexplained LESS 0.15)
+  message(FATAL_ERROR "body-fit: frame 1 gap ${gap} m, continues ${continues}, frame distance ${unexplained} m")
+endif ()
 expect_run(1 "a_1.obj: empty file" body-fit ${WORK}/bad -o ${WORK}/bodyfit_bad)
 # select-template by pose from that body fit: the chosen frame has the smallest rest-pose distance.
 expect_run(0 "chosen by rest-pose" select-template ${WORK}/synth/frames --body-fit ${WORK}/bodyfit/body_fit.json --csv ${WORK}/criteria_pose.csv)

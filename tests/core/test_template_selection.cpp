@@ -1,8 +1,11 @@
 #include <clothtrack/base/Error.h>
 #include <clothtrack/mesh/Primitives.h>
+#include <clothtrack/pipeline/BodyStage.h>
 #include <clothtrack/selection/TemplateSelection.h>
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 using namespace clothtrack;
 
@@ -72,4 +75,30 @@ TEST(TemplateSelection, RestPoseAmongTheTopologicalCandidates)
   EXPECT_EQ(s.chosen, 4);
   EXPECT_EQ(selectTemplate(frames, options).chosen, 4);
   EXPECT_THROW(selectTemplate(frames, options, {1.0, 2.0}), Error);
+}
+
+TEST(TemplateSelection, RestPoseOnlyFromBodiesThatExplainTheirFrame)
+{
+  // Four ok fits; the one nearest the rest pose left a raised arm of its frame unexplained (its
+  // frame distance twice the others'), so it binds no template. A poor fit never does.
+  BodyFitResult body;
+  const double bend[] = {0.8, 0.6, 0.2, 0.7, 0.1};
+  const double explained[] = {0.060, 0.065, 0.130, 0.070, 0.060};
+  for (int k = 0; k < 5; ++k)
+  {
+    BodyFrameFit f;
+    f.pose.rotations(LeftElbow, 0) = bend[k];
+    f.frameDistance = explained[k];
+    body.frames.push_back(f);
+  }
+  body.frames[4].status = BodyFitStatus::Poor;
+  const std::vector<double> d = restPoseDistances(body);
+  ASSERT_EQ(d.size(), 5u);
+  EXPECT_TRUE(std::isnan(d[2]));
+  EXPECT_TRUE(std::isnan(d[4]));
+  EXPECT_NEAR(d[1], restPoseDistance(body.frames[1].pose), 1e-12);
+  const std::vector<FrameTopology> frames(5, frame(1, 0, 1.0));
+  EXPECT_EQ(selectTemplate(frames, {}, d).chosen, 1);
+  // Without the guard the collapsed body wins.
+  EXPECT_EQ(selectTemplate(frames, {}, restPoseDistances(body, 10.0)).chosen, 2);
 }

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <string>
 
 using namespace clothtrack;
@@ -163,6 +164,40 @@ TEST(BodyFit, ShortManInWideTrousersFacesForward)
                                 facing(fit.frames[i].pose).dot(facing(truePoses[i])), -1.0, 1.0)));
   std::printf("[ measured ] short man, worst heading error %.0f degrees\n", worst * 180 / M_PI);
   EXPECT_LT(worst, 0.25 * M_PI);
+}
+
+TEST(BodyFit, FitsACollectionOfUnrelatedPoses)
+{
+  // A walk round a loop, every other frame in a shuffled order: consecutive frames lie tens of
+  // centimetres apart, so no frame may start from its predecessor's pose alone.
+  const Sequence walk = capturedSequence("trousers-walkloop", 16, 0.0);
+  const int order[] = {10, 2, 14, 6, 0, 12, 4, 8};
+  Sequence shuffled;
+  shuffled.beta = walk.beta;
+  for (int k : order)
+  {
+    shuffled.poses.push_back(walk.poses[k]);
+    shuffled.captures.push_back(walk.captures[k]);
+  }
+  BodyFitOptions options;
+  options.shapeFrames = 4;
+  const BodyFitResult fit =
+      fitBodySequence(builtinBodyModel(), pointers(shuffled.captures), options);
+  options.neighbourGap = std::numeric_limits<double>::infinity();
+  const BodyFitResult tracked =
+      fitBodySequence(builtinBodyModel(), pointers(shuffled.captures), options);
+  double joints, surface, trackedJoints;
+  fitErrors(fit, shuffled, Eigen::Matrix3d::Identity(), joints, surface);
+  fitErrors(tracked, shuffled, Eigen::Matrix3d::Identity(), trackedJoints, surface);
+  int unrelated = 0;
+  for (const BodyFrameFit& f : fit.frames) unrelated += !f.continuesPrevious;
+  std::printf("[ measured ] walk loop shuffled: joint error %.2f cm (each frame from its "
+              "predecessor: %.2f cm), %d of 7 frames unrelated to their predecessor\n",
+              100 * joints, 100 * trackedJoints, unrelated);
+  EXPECT_GE(unrelated, 6);
+  EXPECT_EQ(fit.frames[0].previousGap, 0.0);
+  EXPECT_LT(joints, 0.025);
+  EXPECT_LT(joints, 0.7 * trackedJoints);
 }
 
 TEST(BodyFit, FlagsUnusableFramesAndFitsTheOthers)

@@ -6,10 +6,12 @@
 #include <clothtrack/base/Error.h>
 #include <clothtrack/base/Parallel.h>
 #include <clothtrack/mesh/Geodesic.h>
+#include <clothtrack/mesh/SurfaceGap.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -133,28 +135,56 @@ std::vector<int> usableFrames(const std::vector<const TriangleMesh*>& frames,
   return usable;
 }
 
+/// The poses of the ok fits among the usable frames before frame `end`, at most 24 spread
+/// evenly over them (all of them when `end` is not usable).
+std::vector<BodyPose> okPoses(const std::vector<int>& usable, int end,
+                              const std::vector<BodyFrameFit>& fits)
+{
+  std::vector<int> ok;
+  for (int i : usable)
+  {
+    if (i == end) break;
+    if (fits[i].status == BodyFitStatus::Ok) ok.push_back(i);
+  }
+  const size_t count = std::min<size_t>(ok.size(), 24);
+  std::vector<BodyPose> poses;
+  for (size_t k = 0; k < count; ++k) poses.push_back(fits[ok[k * ok.size() / count]].pose);
+  return poses;
+}
+
 /// Pass 1: the mean shape, each frame from its neighbour's pose, the first from the most
-/// plausible heading.
+/// plausible heading. A frame far from its predecessor is not tied to it by the temporal prior,
+/// and is also started from the poses of the frames fitted before it (refitFromPoses).
 void firstPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
                const BodyFitOptions& options, std::vector<BodyFrameFit>& fits,
                FitProgress& progress)
 {
   const BodyFrameFit start = fitter.initialFit(surfaces.get(usable.front()));
-  const BodyPose* previous = nullptr;
+  int last = -1;
   for (int i : usable)
   {
     const FrameSurface& s = surfaces.get(i);
     BodyFrameFit& fit = fits[i];
-    if (previous)
-      fitter.fitFrame(s, *previous, previous, options.stages, fit);
+    if (last >= 0)
+    {
+      const FrameSurface& before = surfaces.get(last);
+      const double gap = meanSurfaceGap(*before.mesh, *before.locator, *s.mesh, *s.locator);
+      surfaces.release(last);
+      const bool continuous = gap <= options.neighbourGap;
+      const BodyPose init = fits[last].pose;
+      fitter.fitFrame(s, init, continuous ? &init : nullptr, options.stages, fit, continuous);
+      if (!continuous) fitter.refitFromPoses(s, okPoses(usable, i, fits), fit);
+      fit.previousGap = gap;
+      fit.continuesPrevious = continuous;
+    }
     else
       fit = start;
     fit.extremities = s.extremities;
     fit.extremitiesDetected = static_cast<int>(s.extremities.size());
-    previous = &fit.pose;
-    surfaces.release(i);
+    last = i;
     progress.advance(1.0);
   }
+  surfaces.release(last);
 }
 
 /// Beta on key frames spread over the sequence (well-fitted ones first), alternating with
@@ -191,7 +221,8 @@ void fitShape(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector
   for (int i : keys) surfaces.release(i);
 }
 
-/// Pass 2: the final shape, each frame from its pass-1 pose, smooth in time. The poses are
+/// Pass 2: the final shape, each frame from its pass-1 pose, smooth in time where it continues
+/// its predecessor. The poses are
 /// already close: the last stage suffices.
 void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
                const BodyFitOptions& options, std::vector<BodyFrameFit>& fits,
@@ -202,11 +233,54 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
   for (int i : usable)
   {
     BodyFrameFit& fit = fits[i];
-    fitter.fitFrame(surfaces.get(i), fit.pose, previous, finalStages, fit);
+    const BodyPose init = fit.pose;
+    fitter.fitFrame(surfaces.get(i), init, fit.continuesPrevious ? previous : nullptr, finalStages,
+                    fit, fit.continuesPrevious);
     if (fit.status == BodyFitStatus::Poor && fit.message.empty()) fit.message = "poor fit";
     previous = &fit.pose;
     surfaces.release(i);
     progress.advance(1.0);
+  }
+}
+/// The frame distance above which an ok fit is poor: the sequence's median raised by
+/// BodyFitOptions::unexplainedRatio and unexplainedMargin; infinite with fewer than 3 ok fits.
+double unexplainedLimit(const BodyFitOptions& options, const std::vector<BodyFrameFit>& fits)
+{
+  std::vector<double> distances;
+  for (const BodyFrameFit& f : fits)
+    if (f.status == BodyFitStatus::Ok) distances.push_back(f.frameDistance);
+  if (distances.size() < 3) return std::numeric_limits<double>::infinity();
+  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+  const double median = distances[distances.size() / 2];
+  return std::max(options.unexplainedRatio * median, median + options.unexplainedMargin);
+}
+
+/// An ok fit whose frame distance exceeds `limit` becomes poor: its body leaves a limb of the
+/// frame unexplained.
+void flagIfUnexplained(double limit, BodyFrameFit& fit)
+{
+  if (fit.status != BodyFitStatus::Ok || !(fit.frameDistance > limit)) return;
+  fit.status = BodyFitStatus::Poor;
+  char message[160];
+  std::snprintf(message, sizeof message,
+                "the body leaves part of the frame unexplained (frame to body %.1f cm, limit "
+                "%.1f cm)",
+                100.0 * fit.frameDistance, 100.0 * limit);
+  fit.message = message;
+}
+
+/// Poor fits started again from the poses of the sequence's ok fits (at most 24, spread over
+/// it): a fit that went wrong where its neighbours did not, or a pose that a collection repeats.
+void recoverPoorFits(SequenceFitter& fitter, FrameSurfaces& surfaces,
+                     const std::vector<int>& usable, double limit, std::vector<BodyFrameFit>& fits)
+{
+  const std::vector<BodyPose> poses = okPoses(usable, -1, fits);
+  for (int i : usable)
+  {
+    if (fits[i].status != BodyFitStatus::Poor) continue;
+    fitter.refitFromPoses(surfaces.get(i), poses, fits[i]);
+    flagIfUnexplained(limit, fits[i]);
+    surfaces.release(i);
   }
 }
 } // namespace
@@ -232,6 +306,9 @@ BodyFitResult fitBodySequence(const BodyModel& model,
   result.beta = fitter.samples().beta();
   fitter.setReachTolerance(options.reachTolerance);
   finalPass(fitter, surfaces, usable, options, result.frames, fitProgress);
+  const double limit = unexplainedLimit(options, result.frames);
+  for (BodyFrameFit& fit : result.frames) flagIfUnexplained(limit, fit);
+  recoverPoorFits(fitter, surfaces, usable, limit, result.frames);
 
   // Frames that could not be fitted take their nearest fitted neighbour's pose.
   for (int i = 0; i < n; ++i)

@@ -4,6 +4,7 @@
 #include "BodyFitTerms.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/mesh/PointIndex.h>
 
 #include <Eigen/Cholesky>
 
@@ -216,6 +217,44 @@ public:
     return total / ns + extremities.energy(p);
   }
 
+  /// Distance from each of at most 1000 evenly spread frame vertices to the nearest body sample
+  /// of `pose`: what of the frame the body leaves unexplained. Clothing keeps it at a few
+  /// centimetres on a good fit; a limb fitted in the wrong place leaves tens there (its arm
+  /// down inside the torso while the frame's is raised, which the body-to-frame terms of score()
+  /// do not see).
+  std::vector<double> frameToBody(const FrameSurface& frame, const BodyPose& pose) const
+  {
+    const PointIndex body(samples_.pose(pose).topRows(samples_.numSamples()));
+    const TriangleMesh& mesh = *frame.mesh;
+    const int n = mesh.numVertices();
+    const int count = std::min(n, 1000);
+    std::vector<double> distances(count);
+    parallelFor(0, count,
+                [&](int i)
+                {
+                  const int v = static_cast<int>(static_cast<long long>(i) * n / count);
+                  distances[i] = body.nearest(mesh.vertex(v)).distance;
+                });
+    return distances;
+  }
+
+  /// score() plus the frame-to-body side (squared distances capped as score() caps its own):
+  /// to choose between fits of a frame that no neighbour vouches for.
+  double twoSidedScore(const FrameSurface& frame, const BodyPose& pose) const
+  {
+    const double cap = options_.stages.back().searchRadius;
+    double uncovered = 0.0;
+    const std::vector<double> distances = frameToBody(frame, pose);
+    for (double d : distances) uncovered += std::min(d * d, cap * cap);
+    return score(frame, pose) + uncovered / std::max<size_t>(1, distances.size());
+  }
+
+  /// A short schedule that brings a start near the frame, to rank starts before the full one.
+  static std::vector<BodyFitStage> quickStages()
+  {
+    return {{1.0, 0.1, 0.0, 4, 0.4}, {0.3, 1.0, 1.0, 4, 0.15}};
+  }
+
   /// A fit from one start, with its score.
   struct RankedFit
   {
@@ -230,7 +269,7 @@ public:
   std::vector<RankedFit> initialFits(const FrameSurface& frame)
   {
     const int headings = std::max(1, options_.headings);
-    const std::vector<BodyFitStage> quick = {{1.0, 0.1, 0.0, 4, 0.4}, {0.3, 1.0, 1.0, 4, 0.15}};
+    const std::vector<BodyFitStage> quick = quickStages();
     std::vector<std::pair<double, BodyPose>> tried;
     for (int h = 0; h < headings; ++h)
     {
@@ -277,16 +316,21 @@ public:
   /// that matches more extremities.
   BodyFrameFit initialFit(const FrameSurface& frame)
   {
-    const std::vector<RankedFit> fits = initialFits(frame);
+    return mostPlausible(initialFits(frame)).fit;
+  }
+
+  /// initialFit's choice among initialFits' results.
+  const RankedFit& mostPlausible(const std::vector<RankedFit>& fits) const
+  {
     auto plausibility = [this](const RankedFit& r)
     { return r.score + regulariser(toVector(r.fit.pose), nullptr); };
     for (size_t k = 1; k < fits.size(); ++k)
       if (headingChange(fits[k].fit.pose, fits[0].fit.pose, options_.up) > 0.5 * M_PI)
         return fits[k].score <= options_.headingAmbiguity * fits[0].score &&
                        plausibility(fits[k]) < plausibility(fits[0])
-                   ? fits[k].fit
-                   : fits[0].fit;
-    return fits[0].fit;
+                   ? fits[k]
+                   : fits[0];
+    return fits[0];
   }
 
   /// Statistics of a fitted pose: median distance and fraction of samples inside.
@@ -310,6 +354,9 @@ public:
     }
     std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
     fit.medianDistance = distances[distances.size() / 2];
+    const std::vector<double> uncovered = frameToBody(frame, fit.pose);
+    fit.frameDistance = 0.0;
+    for (double d : uncovered) fit.frameDistance += d / std::max<size_t>(1, uncovered.size());
     fit.insideFraction = static_cast<double>(inside) / samples_.numSamples();
     const bool poor = fit.medianDistance > options_.poorDistance ||
                       fit.insideFraction < options_.poorInside || !std::isfinite(fit.energy);
@@ -320,34 +367,80 @@ public:
                        : std::string();
   }
 
-  /// One frame: from `init`, full schedule; a poor result is retried from every heading.
+  /// One frame: from `init`, full schedule; a poor result is retried from every heading. A
+  /// frame that does not continue the one `init` comes from (`continuous` false: see
+  /// BodyFitOptions::neighbourGap) may then face any way, and the retry is kept when it explains
+  /// the frame better by twoSidedScore.
   void fitFrame(const FrameSurface& frame, const BodyPose& init, const BodyPose* previous,
-                const std::vector<BodyFitStage>& stages, BodyFrameFit& fit)
+                const std::vector<BodyFitStage>& stages, BodyFrameFit& fit, bool continuous = true)
   {
     fit.pose = init;
     fit.energy =
         fitPose(frame, fit.pose, previous, stages, options_.extremityGate, &fit.extremitiesMatched);
     measure(frame, fit);
     if (fit.status == BodyFitStatus::Ok) return;
-    // A fresh start must face roughly the same way and be clearly better: a body turned the
-    // other way round can fit a wide garment almost as well, and a person cannot turn round
-    // between two frames.
     const auto retries = initialFits(frame);
     const RankedFit* retry = nullptr;
-    for (const RankedFit& r : retries)
-      if (r.fit.status == BodyFitStatus::Ok &&
-          headingChange(r.fit.pose, init, options_.up) < 0.5 * M_PI)
-      {
-        retry = &r;
-        break;
-      }
-    if (retry && retry->score < 0.5 * score(frame, fit.pose))
+    if (!continuous)
+      retry = &mostPlausible(retries);
+    else
+    {
+      // A fresh start must face roughly the same way and be clearly better: a body turned the
+      // other way round can fit a wide garment almost as well, and a person cannot turn round
+      // between two frames.
+      for (const RankedFit& r : retries)
+        if (r.fit.status == BodyFitStatus::Ok &&
+            headingChange(r.fit.pose, init, options_.up) < 0.5 * M_PI)
+        {
+          retry = &r;
+          break;
+        }
+    }
+    const bool replace = retry && (continuous ? retry->score < 0.5 * score(frame, fit.pose)
+                                              : twoSidedScore(frame, retry->fit.pose) <
+                                                    twoSidedScore(frame, fit.pose));
+    if (replace)
     {
       fit.pose = retry->fit.pose;
       fit.energy = retry->fit.energy;
       fit.extremitiesMatched = retry->fit.extremitiesMatched;
       measure(frame, fit);
     }
+  }
+
+  /// A frame that no neighbour vouches for, started again from the poses of frames already
+  /// fitted (a collection of poses repeats some): each moved onto the frame and briefly fitted,
+  /// the best by twoSidedScore fitted fully, and kept if it explains the frame better than `fit`.
+  void refitFromPoses(const FrameSurface& frame, const std::vector<BodyPose>& poses,
+                      BodyFrameFit& fit)
+  {
+    if (poses.empty()) return;
+    const std::vector<BodyFitStage> quick = quickStages();
+    double bestScore = std::numeric_limits<double>::infinity();
+    BodyPose best;
+    for (const BodyPose& seen : poses)
+    {
+      BodyPose pose = seen;
+      const Points p = samples_.pose(pose);
+      pose.translation +=
+          frame.centroid - p.topRows(samples_.numSamples()).colwise().mean().transpose();
+      fitPose(frame, pose, nullptr, quick, 2.0 * options_.extremityGate);
+      const double s = twoSidedScore(frame, pose);
+      if (s < bestScore)
+      {
+        bestScore = s;
+        best = pose;
+      }
+    }
+    BodyFrameFit other;
+    other.pose = best;
+    other.energy = fitPose(frame, other.pose, nullptr, options_.stages, options_.extremityGate,
+                           &other.extremitiesMatched);
+    if (twoSidedScore(frame, other.pose) >= twoSidedScore(frame, fit.pose)) return;
+    fit.pose = other.pose;
+    fit.energy = other.energy;
+    fit.extremitiesMatched = other.extremitiesMatched;
+    measure(frame, fit);
   }
 
   /// Gauss-Newton steps on beta with the key frames' poses fixed.

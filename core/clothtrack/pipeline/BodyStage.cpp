@@ -5,6 +5,9 @@
 #include <clothtrack/body/OrientedLandmarks.h>
 #include <clothtrack/mesh/SurfaceLocator.h>
 
+#include <algorithm>
+#include <limits>
+
 namespace clothtrack
 {
 BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
@@ -37,10 +40,21 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
   return out;
 }
 
-std::vector<double> restPoseDistances(const BodyFitResult& body)
+std::vector<double> restPoseDistances(const BodyFitResult& body, double explainedRatio)
 {
+  std::vector<double> explained;
+  for (const BodyFrameFit& f : body.frames)
+    if (f.status == BodyFitStatus::Ok) explained.push_back(f.frameDistance);
+  double limit = std::numeric_limits<double>::infinity();
+  if (!explained.empty())
+  {
+    std::nth_element(explained.begin(), explained.begin() + explained.size() / 2, explained.end());
+    limit = explainedRatio * explained[explained.size() / 2];
+  }
   std::vector<double> out;
-  for (const BodyFrameFit& f : body.frames) out.push_back(fittedRestPoseDistance(f.status, f.pose));
+  for (const BodyFrameFit& f : body.frames)
+    out.push_back(f.frameDistance <= limit ? fittedRestPoseDistance(f.status, f.pose)
+                                           : std::numeric_limits<double>::quiet_NaN());
   return out;
 }
 } // namespace clothtrack

@@ -38,6 +38,10 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
                                     const BodyStageOptions& options = {},
                                     const StageProgress& progress = {});
 
-/// Each frame's fittedRestPoseDistance: NaN unless its body fit is ok.
-std::vector<double> restPoseDistances(const BodyFitResult& body);
+/// Each frame's fittedRestPoseDistance, the template criterion: NaN unless its body fit is ok
+/// and explains its frame nearly as well as the sequence's median fit does (frameDistance at
+/// most `explainedRatio` times the median of the ok fits). The template frame's body binds the
+/// template for every frame; a body that fell towards the rest pose, leaving a raised limb
+/// unexplained, looked like the best template.
+std::vector<double> restPoseDistances(const BodyFitResult& body, double explainedRatio = 1.3);
 } // namespace clothtrack
