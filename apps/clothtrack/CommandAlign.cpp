@@ -137,9 +137,12 @@ struct Run
   const TriangleMesh& templateMesh() const { return input.frames[templateFrame]; }
 };
 
-/// Says so when frames are missing from a numbered sequence: the motion jumps there.
+/// Says so when frames are missing from a numbered sequence: the motion jumps there. Files listed
+/// in another order than their numbers (a list file) are a chosen set of poses: nothing is missing.
 void warnAboutGaps(const std::vector<std::string>& files)
 {
+  for (size_t k = 1; k < files.size(); ++k)
+    if (frameNumberFromName(files[k]) <= frameNumberFromName(files[k - 1])) return;
   for (size_t k = 1; k < files.size(); ++k)
   {
     const long before = frameNumberFromName(files[k - 1]), after = frameNumberFromName(files[k]);

@@ -158,6 +158,13 @@ file(WRITE ${WORK}/gappy/frame_0002.obj "v 0 0 0\nv 1 0 0\nf 1 2 7\n")
 expect_run(1 "frame_0002.obj:3: face index 7 out of range" align ${WORK}/gappy -o ${WORK}/gappy_out)
 expect_run(0 "frame left out" align ${WORK}/gappy -o ${WORK}/gappy_out --skip-bad-frames --no-report)
 expect_run(0 "frames 2 to 3 are missing" align ${WORK}/gappy -o ${WORK}/gappy_out --skip-bad-frames --no-report)
+# A list in another order is a chosen set of poses, not a numbered sequence: no gap is reported.
+file(WRITE ${WORK}/poses.txt "${WORK}/gappy/frame_0004.obj\n${WORK}/gappy/frame_0000.obj\n${WORK}/gappy/frame_0001.obj\n")
+execute_process(COMMAND ${APP} align ${WORK}/poses.txt -o ${WORK}/poses_out --no-report
+  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+if (NOT code EQUAL 0 OR err MATCHES "are missing" OR NOT "${out}${err}" MATCHES "aligned 3 frames")
+  message(FATAL_ERROR "align on a list of poses: exit ${code}\nstdout: ${out}\nstderr: ${err}")
+endif ()
 
 expect_run(0 "--ground-truth" align --help)
 expect_run(1 "no metrics.json" report ${WORK}/empty)
