@@ -17,7 +17,7 @@
  * rotations then the translation), RestPoseDistance (sum of the non-root joint angles in
  * radians, NaN unless the fit is ok), MedianDistance, InsideFraction, FrameDistance (mean
  * distance from the frame to the body, m) and PreviousGap (mean surface distance to the frame
- * before, m: above 6 cm the frame was fitted afresh as an unrelated pose); the collection's field
+ * before, m: above 6 cm the frame is fitted as an unrelated pose); the collection's field
  * data holds ShapeCoefficients (beta).
  * Output port 1: vtkMultiBlockDataSet, the oriented landmarks of each frame (as
  * ctLandmarkTransfer: Valid, Direction, LandmarkId, LandmarkName, Offset, FrameFace,

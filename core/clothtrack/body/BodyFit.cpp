@@ -18,6 +18,16 @@
 
 namespace clothtrack
 {
+std::optional<double> medianFrameDistance(const std::vector<BodyFrameFit>& fits, size_t minimumFits)
+{
+  std::vector<double> distances;
+  for (const BodyFrameFit& f : fits)
+    if (f.status == BodyFitStatus::Ok) distances.push_back(f.frameDistance);
+  if (distances.empty() || distances.size() < minimumFits) return std::nullopt;
+  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+  return distances[distances.size() / 2];
+}
+
 double fittedRestPoseDistance(BodyFitStatus status, const BodyPose& pose)
 {
   return status == BodyFitStatus::Ok ? restPoseDistance(pose)
@@ -222,8 +232,7 @@ void fitShape(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector
 }
 
 /// Pass 2: the final shape, each frame from its pass-1 pose, smooth in time where it continues
-/// its predecessor. The poses are
-/// already close: the last stage suffices.
+/// its predecessor. The poses are already close: the last stage suffices.
 void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
                const BodyFitOptions& options, std::vector<BodyFrameFit>& fits,
                FitProgress& progress)
@@ -242,17 +251,14 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
     progress.advance(1.0);
   }
 }
+
 /// The frame distance above which an ok fit is poor: the sequence's median raised by
 /// BodyFitOptions::unexplainedRatio and unexplainedMargin; infinite with fewer than 3 ok fits.
 double unexplainedLimit(const BodyFitOptions& options, const std::vector<BodyFrameFit>& fits)
 {
-  std::vector<double> distances;
-  for (const BodyFrameFit& f : fits)
-    if (f.status == BodyFitStatus::Ok) distances.push_back(f.frameDistance);
-  if (distances.size() < 3) return std::numeric_limits<double>::infinity();
-  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
-  const double median = distances[distances.size() / 2];
-  return std::max(options.unexplainedRatio * median, median + options.unexplainedMargin);
+  const std::optional<double> median = medianFrameDistance(fits, 3);
+  if (!median) return std::numeric_limits<double>::infinity();
+  return std::max(options.unexplainedRatio * *median, *median + options.unexplainedMargin);
 }
 
 /// An ok fit whose frame distance exceeds `limit` becomes poor: its body leaves a limb of the

@@ -35,6 +35,7 @@
 #include <clothtrack/base/Progress.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -134,6 +135,10 @@ struct BodyFrameFit
   /// unrelated pose, not from its predecessor alone.
   bool continuesPrevious = true;
 };
+
+/// The median frameDistance of the ok fits; nullopt with fewer than `minimumFits` of them.
+std::optional<double> medianFrameDistance(const std::vector<BodyFrameFit>& fits,
+                                          size_t minimumFits = 1);
 
 /// The fitted pose's restPoseDistance when the fit is ok; NaN for a poor or failed fit, whose
 /// pose must not choose the template.

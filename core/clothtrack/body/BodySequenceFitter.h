@@ -399,13 +399,16 @@ public:
     const bool replace = retry && (continuous ? retry->score < 0.5 * score(frame, fit.pose)
                                               : twoSidedScore(frame, retry->fit.pose) <
                                                     twoSidedScore(frame, fit.pose));
-    if (replace)
-    {
-      fit.pose = retry->fit.pose;
-      fit.energy = retry->fit.energy;
-      fit.extremitiesMatched = retry->fit.extremitiesMatched;
-      measure(frame, fit);
-    }
+    if (replace) adopt(frame, retry->fit, fit);
+  }
+
+  /// `fit` takes the pose of `other`, a fit of the same frame from another start.
+  void adopt(const FrameSurface& frame, const BodyFrameFit& other, BodyFrameFit& fit) const
+  {
+    fit.pose = other.pose;
+    fit.energy = other.energy;
+    fit.extremitiesMatched = other.extremitiesMatched;
+    measure(frame, fit);
   }
 
   /// A frame that no neighbour vouches for, started again from the poses of frames already
@@ -436,11 +439,7 @@ public:
     other.pose = best;
     other.energy = fitPose(frame, other.pose, nullptr, options_.stages, options_.extremityGate,
                            &other.extremitiesMatched);
-    if (twoSidedScore(frame, other.pose) >= twoSidedScore(frame, fit.pose)) return;
-    fit.pose = other.pose;
-    fit.energy = other.energy;
-    fit.extremitiesMatched = other.extremitiesMatched;
-    measure(frame, fit);
+    if (twoSidedScore(frame, other.pose) < twoSidedScore(frame, fit.pose)) adopt(frame, other, fit);
   }
 
   /// Gauss-Newton steps on beta with the key frames' poses fixed.

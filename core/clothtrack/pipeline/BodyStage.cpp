@@ -5,8 +5,8 @@
 #include <clothtrack/body/OrientedLandmarks.h>
 #include <clothtrack/mesh/SurfaceLocator.h>
 
-#include <algorithm>
 #include <limits>
+#include <optional>
 
 namespace clothtrack
 {
@@ -42,15 +42,8 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
 
 std::vector<double> restPoseDistances(const BodyFitResult& body, double explainedRatio)
 {
-  std::vector<double> explained;
-  for (const BodyFrameFit& f : body.frames)
-    if (f.status == BodyFitStatus::Ok) explained.push_back(f.frameDistance);
-  double limit = std::numeric_limits<double>::infinity();
-  if (!explained.empty())
-  {
-    std::nth_element(explained.begin(), explained.begin() + explained.size() / 2, explained.end());
-    limit = explainedRatio * explained[explained.size() / 2];
-  }
+  const std::optional<double> median = medianFrameDistance(body.frames);
+  const double limit = median ? explainedRatio * *median : std::numeric_limits<double>::infinity();
   std::vector<double> out;
   for (const BodyFrameFit& f : body.frames)
     out.push_back(f.frameDistance <= limit ? fittedRestPoseDistance(f.status, f.pose)
