@@ -232,7 +232,10 @@ void fitShape(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector
 }
 
 /// Pass 2: the final shape, each frame from its pass-1 pose, smooth in time where it continues
-/// its predecessor. The poses are already close: the last stage suffices.
+/// its predecessor. The poses are already close: the last stage suffices. Where the frame
+/// continues its predecessor, that frame's final pose is a second start: a first-pass track that
+/// drifted with the mean shape (its heading 10 degrees off for the rest of pjump) is
+/// pulled back by the final shape's own track.
 void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
                const BodyFitOptions& options, std::vector<BodyFrameFit>& fits,
                FitProgress& progress)
@@ -245,6 +248,8 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
     const BodyPose init = fit.pose;
     fitter.fitFrame(surfaces.get(i), init, fit.continuesPrevious ? previous : nullptr, finalStages,
                     fit, fit.continuesPrevious);
+    if (previous && fit.continuesPrevious)
+      fitter.refitFromNeighbour(surfaces.get(i), *previous, finalStages, fit);
     if (fit.status == BodyFitStatus::Poor && fit.message.empty()) fit.message = "poor fit";
     previous = &fit.pose;
     surfaces.release(i);

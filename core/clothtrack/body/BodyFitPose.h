@@ -3,6 +3,8 @@
 // (BodyFit.cpp).
 #include "BodyFit.h"
 
+#include <Eigen/Geometry>
+
 #include <array>
 #include <cmath>
 
@@ -61,6 +63,34 @@ inline double headingChange(const BodyPose& a, const BodyPose& b, const Vec3& up
   const Vec3 fa = facing(a), fb = facing(b);
   return std::atan2(fa.cross(fb).norm(), fa.dot(fb));
 }
+
+/// Axis-angle vector of a rotation matrix, with an angle of at most pi.
+inline Vec3 matrixToAxisAngle(const Eigen::Matrix3d& rotation)
+{
+  const Eigen::AngleAxisd a(rotation);
+  return a.angle() * a.axis();
+}
+
+/// The root's rotation as a turn about world axes away from a reference rotation. An axis-angle
+/// vector is singular near an angle of 2 pi: every vector of that length is the identity, so a
+/// person who has turned nearly once round is tracked by steps that barely move the body, and
+/// the fit lags through the next turn. A turn away from the current rotation is well conditioned
+/// wherever the body faces.
+struct RootTurns
+{
+  Eigen::Matrix3d reference;
+
+  /// The root's axis-angle vector after `turn`.
+  Vec3 rootAfter(const Vec3& turn) const
+  {
+    return matrixToAxisAngle(axisAngleToMatrix(turn) * reference);
+  }
+  /// The turn that brings the reference to the root rotation `root`.
+  Vec3 turnTo(const Vec3& root) const
+  {
+    return matrixToAxisAngle(axisAngleToMatrix(root) * reference.transpose());
+  }
+};
 
 inline Eigen::VectorXd toVector(const BodyPose& pose)
 {

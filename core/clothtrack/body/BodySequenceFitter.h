@@ -9,6 +9,7 @@
 #include <Eigen/Cholesky>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -99,15 +100,34 @@ public:
   }
 
   /// Damped Gauss-Newton on the pose with assignments refreshed every iteration.
-  /// `rigid` moves the body as a whole only (root rotation and translation).
+  /// `rigid` moves the body as a whole only (root rotation and translation). `byTurns` moves the
+  /// root by turns away from its current rotation (RootTurns), for tracking: a body that turns
+  /// on from its neighbour's pose. Fits from fixed headings keep the axis-angle parameters, whose
+  /// starts spread evenly over a full turn.
   double fitPose(const FrameSurface& frame, BodyPose& pose, const BodyPose* previous,
                  const std::vector<BodyFitStage>& stages, double gate, int* matched = nullptr,
-                 bool rigid = false)
+                 bool rigid = false, bool byTurns = false)
   {
     auto active = [rigid](int c) { return !rigid || c < 3 || c >= NumJoints * 3; };
     Eigen::VectorXd x = toVector(pose);
     Eigen::VectorXd prev = previous ? toVector(*previous) : Eigen::VectorXd();
     const Eigen::VectorXd* prevPtr = previous ? &prev : nullptr;
+    std::optional<RootTurns> turns;
+    // With turns, x's root entries are the turn from the reference, and prev's the turn to the
+    // previous root: the temporal prior then weighs the turn between the two frames.
+    auto recentre = [&](const Vec3& root)
+    {
+      turns = RootTurns{axisAngleToMatrix(root)};
+      x.head<3>().setZero();
+      if (previous) prev.head<3>() = turns->turnTo(previous->rotations.row(Pelvis).transpose());
+    };
+    if (byTurns) recentre(x.head<3>());
+    auto poseOf = [&turns](const Eigen::VectorXd& v)
+    {
+      BodyPose p = toPose(v);
+      if (turns) p.rotations.row(Pelvis) = turns->rootAfter(v.head<3>()).transpose();
+      return p;
+    };
     double energy = 0.0;
     double lambda = 1e-3;
     std::vector<Points> columns(kPoseParameters);
@@ -115,8 +135,8 @@ public:
       for (int it = 0; it < stage.iterations; ++it)
       {
         Points normals;
-        const Points p = samples_.pose(toPose(x), &normals);
-        const Assignments a = assign(frame, toPose(x), p, normals, stage, gate);
+        const Points p = samples_.pose(poseOf(x), &normals);
+        const Assignments a = assign(frame, poseOf(x), p, normals, stage, gate);
         if (matched) *matched = a.matchedExtremities;
         parallelFor(
             0, kPoseParameters,
@@ -129,7 +149,7 @@ public:
               }
               Eigen::VectorXd xs = x;
               xs[c] += kStep;
-              columns[c] = (samples_.pose(toPose(xs)) - p) / kStep;
+              columns[c] = (samples_.pose(poseOf(xs)) - p) / kStep;
             },
             8);
         Eigen::MatrixXd h = Eigen::MatrixXd::Zero(kPoseParameters, kPoseParameters);
@@ -170,18 +190,19 @@ public:
           const Eigen::VectorXd step = damped.ldlt().solve(-g);
           const Eigen::VectorXd candidate = x + step;
           const double e =
-              a.energy(samples_.pose(toPose(candidate))) + regulariser(candidate, prevPtr);
+              a.energy(samples_.pose(poseOf(candidate))) + regulariser(candidate, prevPtr);
           if (std::isfinite(e) && e <= energy)
           {
             x = candidate;
             energy = e;
+            if (turns) recentre(poseOf(x).rotations.row(Pelvis).transpose());
             lambda = std::max(1e-6, lambda / 3.0);
             break;
           }
           lambda *= 10.0;
         }
       }
-    pose = toPose(x);
+    pose = poseOf(x);
     return energy;
   }
 
@@ -367,16 +388,16 @@ public:
                        : std::string();
   }
 
-  /// One frame: from `init`, full schedule; a poor result is retried from every heading. A
-  /// frame that does not continue the one `init` comes from (`continuous` false: see
-  /// BodyFitOptions::neighbourGap) may then face any way, and the retry is kept when it explains
-  /// the frame better by twoSidedScore.
+  /// One frame: from `init`, full schedule, the root moved by turns; a poor result is retried
+  /// from every heading, and a retry is kept only when it explains the frame better by
+  /// twoSidedScore. A frame that does not continue the one `init` comes from (`continuous`
+  /// false: see BodyFitOptions::neighbourGap) may then face any way.
   void fitFrame(const FrameSurface& frame, const BodyPose& init, const BodyPose* previous,
                 const std::vector<BodyFitStage>& stages, BodyFrameFit& fit, bool continuous = true)
   {
     fit.pose = init;
-    fit.energy =
-        fitPose(frame, fit.pose, previous, stages, options_.extremityGate, &fit.extremitiesMatched);
+    fit.energy = fitPose(frame, fit.pose, previous, stages, options_.extremityGate,
+                         &fit.extremitiesMatched, /*rigid=*/false, /*byTurns=*/true);
     measure(frame, fit);
     if (fit.status == BodyFitStatus::Ok) return;
     const auto retries = initialFits(frame);
@@ -385,20 +406,23 @@ public:
       retry = &mostPlausible(retries);
     else
     {
-      // A fresh start must face roughly the same way and be clearly better: a body turned the
-      // other way round can fit a wide garment almost as well, and a person cannot turn round
-      // between two frames.
+      // A fresh start must face roughly the same way, leave no more of the frame unexplained
+      // and be clearly better: a body turned the other way round can fit a wide garment almost
+      // as well, a person cannot turn round between two frames, and a body with its arms down
+      // inside a wide top sits inside the frame better than one reaching for the hands.
       for (const RankedFit& r : retries)
         if (r.fit.status == BodyFitStatus::Ok &&
-            headingChange(r.fit.pose, init, options_.up) < 0.5 * M_PI)
+            headingChange(r.fit.pose, init, options_.up) < 0.5 * M_PI &&
+            r.fit.frameDistance <= fit.frameDistance)
         {
           retry = &r;
           break;
         }
     }
-    const bool replace = retry && (continuous ? retry->score < 0.5 * score(frame, fit.pose)
-                                              : twoSidedScore(frame, retry->fit.pose) <
-                                                    twoSidedScore(frame, fit.pose));
+    const bool explainsMore =
+        retry && twoSidedScore(frame, retry->fit.pose) < twoSidedScore(frame, fit.pose);
+    const bool replace =
+        explainsMore && (!continuous || retry->score < 0.5 * score(frame, fit.pose));
     if (replace) adopt(frame, retry->fit, fit);
   }
 
@@ -409,6 +433,18 @@ public:
     fit.energy = other.energy;
     fit.extremitiesMatched = other.extremitiesMatched;
     measure(frame, fit);
+  }
+
+  /// The final pass's second start: the neighbour's final pose, kept if it explains the frame
+  /// better than the fit from the frame's own first-pass pose.
+  void refitFromNeighbour(const FrameSurface& frame, const BodyPose& neighbour,
+                          const std::vector<BodyFitStage>& stages, BodyFrameFit& fit)
+  {
+    BodyFrameFit other;
+    other.pose = neighbour;
+    other.energy = fitPose(frame, other.pose, &neighbour, stages, options_.extremityGate,
+                           &other.extremitiesMatched, /*rigid=*/false, /*byTurns=*/true);
+    if (twoSidedScore(frame, other.pose) < twoSidedScore(frame, fit.pose)) adopt(frame, other, fit);
   }
 
   /// A frame that no neighbour vouches for, started again from the poses of frames already
