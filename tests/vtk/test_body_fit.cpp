@@ -87,6 +87,24 @@ void fitErrors(const BodyFitResult& fit, const Sequence& truth, const Eigen::Mat
     surface += (fitted.V - body.V).rowwise().norm().mean() / truth.poses.size();
   }
 }
+
+/// Mean and worst per-frame mean joint distance (metres) between the fit and the truth over
+/// frames first to the last.
+void frameJointErrors(const BodyFitResult& fit, const Sequence& truth, size_t first, double& mean,
+                      double& worst)
+{
+  const BodyModel& model = builtinBodyModel();
+  mean = worst = 0.0;
+  for (size_t i = first; i < truth.poses.size(); ++i)
+  {
+    Points fitted, trueJoints;
+    model.posed(fit.beta, fit.frames[i].pose, &fitted);
+    model.posed(truth.beta, truth.poses[i], &trueJoints);
+    const double error = (fitted - trueJoints).rowwise().norm().mean();
+    mean += error / (truth.poses.size() - first);
+    worst = std::max(worst, error);
+  }
+}
 } // namespace
 
 TEST(BodyFit, RecoversShapeAndPoseUnderADress)
@@ -176,17 +194,8 @@ TEST(BodyFit, FollowsQuickHalfTurnsOfAShortMan)
   options.shapeFrames = 3;
   const BodyFitResult fit =
       fitBodySequence(builtinBodyModel(), pointers(captured.captures), options);
-  const BodyModel& model = builtinBodyModel();
-  double mean = 0.0, worst = 0.0;
-  for (size_t i = 0; i < captured.poses.size(); ++i)
-  {
-    Points fitted, truth;
-    model.posed(fit.beta, fit.frames[i].pose, &fitted);
-    model.posed(captured.beta, captured.poses[i], &truth);
-    const double error = (fitted - truth).rowwise().norm().mean();
-    mean += error / captured.poses.size();
-    worst = std::max(worst, error);
-  }
+  double mean, worst;
+  frameJointErrors(fit, captured, 0, mean, worst);
   std::printf("[ measured ] short man turning: joint error mean %.2f cm, worst frame %.2f cm\n",
               100 * mean, 100 * worst);
   EXPECT_LT(mean, 0.03);
@@ -202,17 +211,8 @@ TEST(BodyFit, KeepsUpWithAQuickSquatInWideTrousers)
   options.shapeFrames = 4;
   const BodyFitResult fit =
       fitBodySequence(builtinBodyModel(), pointers(captured.captures), options);
-  const BodyModel& model = builtinBodyModel();
-  double descent = 0.0, worst = 0.0;
-  for (size_t i = 14; i < captured.poses.size(); ++i)
-  {
-    Points fitted, truth;
-    model.posed(fit.beta, fit.frames[i].pose, &fitted);
-    model.posed(captured.beta, captured.poses[i], &truth);
-    const double error = (fitted - truth).rowwise().norm().mean();
-    descent += error / (captured.poses.size() - 14);
-    worst = std::max(worst, error);
-  }
+  double descent, worst;
+  frameJointErrors(fit, captured, 14, descent, worst);
   std::printf("[ measured ] squat, frames 14-25: joint error mean %.2f cm, worst frame %.2f cm\n",
               100 * descent, 100 * worst);
   EXPECT_LT(descent, 0.03);
