@@ -257,24 +257,6 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
   }
 }
 
-/// Pass 2 backwards: each frame that its successor continues is also started from the
-/// successor's final pose, and the fit that explains the frame better is kept. A forward track
-/// that fell behind a fast motion (a squat's deepest frames) is caught from the other side.
-void backwardPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
-                  const BodyFitOptions& options, std::vector<BodyFrameFit>& fits,
-                  FitProgress& progress)
-{
-  const std::vector<BodyFitStage> finalStages(options.stages.end() - 1, options.stages.end());
-  for (size_t k = usable.size(); k-- > 0;)
-  {
-    const int i = usable[k];
-    if (k + 1 < usable.size() && fits[usable[k + 1]].continuesPrevious)
-      fitter.refitFromNeighbour(surfaces.get(i), fits[usable[k + 1]].pose, finalStages, fits[i]);
-    surfaces.release(i);
-    progress.advance(1.0);
-  }
-}
-
 /// The frame distance above which an ok fit is poor: the sequence's median raised by
 /// BodyFitOptions::unexplainedRatio and unexplainedMargin; infinite with fewer than 3 ok fits.
 double unexplainedLimit(const BodyFitOptions& options, const std::vector<BodyFrameFit>& fits)
@@ -325,7 +307,7 @@ BodyFitResult fitBodySequence(const BodyModel& model,
   result.frames.resize(n);
   const std::vector<int> usable = usableFrames(frames, result.frames);
   FitProgress fitProgress(progress,
-                          3.0 * n + options.shapeRounds * std::max(1, options.shapeFrames));
+                          2.0 * n + options.shapeRounds * std::max(1, options.shapeFrames));
   FrameSurfaces surfaces(frames, options.extremityPersistence);
   SequenceFitter fitter(model, options);
 
@@ -335,7 +317,6 @@ BodyFitResult fitBodySequence(const BodyModel& model,
   result.beta = fitter.samples().beta();
   fitter.setReachTolerance(options.reachTolerance);
   finalPass(fitter, surfaces, usable, options, result.frames, fitProgress);
-  backwardPass(fitter, surfaces, usable, options, result.frames, fitProgress);
   const double limit = unexplainedLimit(options, result.frames);
   for (BodyFrameFit& fit : result.frames) flagIfUnexplained(limit, fit);
   recoverPoorFits(fitter, surfaces, usable, limit, result.frames);

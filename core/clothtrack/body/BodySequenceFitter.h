@@ -435,9 +435,8 @@ public:
     measure(frame, fit);
   }
 
-  /// A second start for the final pass: a neighbouring frame's final pose (the predecessor going
-  /// forward, the successor going back), with the temporal prior towards it; kept if it explains
-  /// the frame better by twoSidedScore than `fit`.
+  /// The final pass's second start: the neighbour's final pose, kept if it explains the frame
+  /// better than the fit from the frame's own first-pass pose.
   void refitFromNeighbour(const FrameSurface& frame, const BodyPose& neighbour,
                           const std::vector<BodyFitStage>& stages, BodyFrameFit& fit)
   {
