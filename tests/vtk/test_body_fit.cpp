@@ -70,12 +70,14 @@ std::vector<const TriangleMesh*> pointers(const std::vector<TriangleMesh>& meshe
   return out;
 }
 
-/// Mean joint and vertex distances (metres) between the fit and the truth, rotated by `turn`.
+/// Mean joint and vertex distances (metres) between the fit and the truth, rotated by `turn`;
+/// `worstJoints`, when given, receives the largest of the frames' mean joint distances.
 void fitErrors(const BodyFitResult& fit, const Sequence& truth, const Eigen::Matrix3d& turn,
-               double& joints, double& surface)
+               double& joints, double& surface, double* worstJoints = nullptr)
 {
   const BodyModel& model = builtinBodyModel();
   joints = surface = 0.0;
+  if (worstJoints) *worstJoints = 0.0;
   for (size_t i = 0; i < truth.poses.size(); ++i)
   {
     Points fittedJoints, trueJoints;
@@ -83,28 +85,13 @@ void fitErrors(const BodyFitResult& fit, const Sequence& truth, const Eigen::Mat
     TriangleMesh body = model.posed(truth.beta, truth.poses[i], &trueJoints);
     trueJoints = trueJoints * turn.transpose();
     body.V = body.V * turn.transpose();
-    joints += (fittedJoints - trueJoints).rowwise().norm().mean() / truth.poses.size();
+    const double frameJoints = (fittedJoints - trueJoints).rowwise().norm().mean();
+    joints += frameJoints / truth.poses.size();
+    if (worstJoints) *worstJoints = std::max(*worstJoints, frameJoints);
     surface += (fitted.V - body.V).rowwise().norm().mean() / truth.poses.size();
   }
 }
 
-/// Mean and worst per-frame mean joint distance (metres) between the fit and the truth over
-/// frames first to the last.
-void frameJointErrors(const BodyFitResult& fit, const Sequence& truth, size_t first, double& mean,
-                      double& worst)
-{
-  const BodyModel& model = builtinBodyModel();
-  mean = worst = 0.0;
-  for (size_t i = first; i < truth.poses.size(); ++i)
-  {
-    Points fitted, trueJoints;
-    model.posed(fit.beta, fit.frames[i].pose, &fitted);
-    model.posed(truth.beta, truth.poses[i], &trueJoints);
-    const double error = (fitted - trueJoints).rowwise().norm().mean();
-    mean += error / (truth.poses.size() - first);
-    worst = std::max(worst, error);
-  }
-}
 } // namespace
 
 TEST(BodyFit, RecoversShapeAndPoseUnderADress)
@@ -194,8 +181,8 @@ TEST(BodyFit, FollowsQuickHalfTurnsOfAShortMan)
   options.shapeFrames = 3;
   const BodyFitResult fit =
       fitBodySequence(builtinBodyModel(), pointers(captured.captures), options);
-  double mean, worst;
-  frameJointErrors(fit, captured, 0, mean, worst);
+  double mean, surface, worst;
+  fitErrors(fit, captured, Eigen::Matrix3d::Identity(), mean, surface, &worst);
   std::printf("[ measured ] short man turning: joint error mean %.2f cm, worst frame %.2f cm\n",
               100 * mean, 100 * worst);
   EXPECT_LT(mean, 0.03);

@@ -135,8 +135,9 @@ public:
       for (int it = 0; it < stage.iterations; ++it)
       {
         Points normals;
-        const Points p = samples_.pose(poseOf(x), &normals);
-        const Assignments a = assign(frame, poseOf(x), p, normals, stage, gate);
+        const BodyPose current = poseOf(x);
+        const Points p = samples_.pose(current, &normals);
+        const Assignments a = assign(frame, current, p, normals, stage, gate);
         if (matched) *matched = a.matchedExtremities;
         parallelFor(
             0, kPoseParameters,
