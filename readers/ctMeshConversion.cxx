@@ -1,7 +1,9 @@
 #include "ctMeshConversion.h"
+#include "ctVtkMessageCapture.h"
 
 #include <clothtrack/base/Error.h>
 #include <clothtrack/io/MeshIO.h>
+#include <clothtrack/io/ReaderPrechecks.h>
 #include <clothtrack/mesh/MeshValidation.h>
 
 #include <vtkCallbackCommand.h>
@@ -12,7 +14,6 @@
 #include <vtkPLYWriter.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
@@ -24,6 +25,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -55,13 +57,7 @@ struct ErrorCollector
         {
           auto* self = static_cast<ErrorCollector*>(client);
           if (self->message.empty() && callData)
-          {
-            std::string text = static_cast<const char*>(callData);
-            // VTK prefixes messages with the source location; keep only the last line.
-            text.erase(text.find_last_not_of("\n ") + 1);
-            const auto nl = text.rfind('\n');
-            self->message = nl == std::string::npos ? text : text.substr(nl + 1);
-          }
+            self->message = plainVtkMessage(static_cast<const char*>(callData));
         });
   }
   void watch(vtkObject* object)
@@ -77,8 +73,12 @@ template <class Reader> vtkSmartPointer<vtkPolyData> readWithVtk(const std::stri
   ErrorCollector errors;
   errors.watch(reader);
   reader->SetFileName(path.c_str());
+  VtkMessageCapture others; // the reader's executive, arrays and parser
   reader->Update();
-  if (!errors.message.empty()) throw Error(path + ": " + errors.message);
+  // The first message came from where the reading went wrong; the reader's own follows it.
+  const std::string message =
+      others.firstMessage().empty() ? errors.message : others.firstMessage();
+  if (!message.empty()) throw Error(path + ": " + message);
   vtkSmartPointer<vtkPolyData> out = reader->GetOutput();
   if (!out) throw Error(path + ": the file could not be read");
   return out;
@@ -166,7 +166,9 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh)
   return out;
 }
 
-TriangleMesh readMeshFile(const std::string& path)
+namespace
+{
+TriangleMesh readMeshFileUnguarded(const std::string& path)
 {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw Error(path + ": no such file");
@@ -179,22 +181,33 @@ TriangleMesh readMeshFile(const std::string& path)
   if (ext == ".ply") // VTK's PLY reader crashes on truncated headers: use the strict one
     return readPLY(path);
   if (ext == ".stl")
-    data = readWithVtk<vtkSTLReader>(path);
-  else if (ext == ".vtp")
-    data = readWithVtk<vtkXMLPolyDataReader>(path);
-  else if (ext == ".vtk")
   {
-    vtkNew<vtkPolyDataReader> probe;
-    probe->SetFileName(path.c_str());
-    if (!probe->OpenVTKFile() || !probe->ReadHeader())
-      throw Error(path + ": not a legacy VTK file (bad header)");
-    probe->CloseVTKFile();
-    if (!probe->IsFilePolyData()) throw Error(path + ": legacy VTK file does not hold POLYDATA");
-    data = readWithVtk<vtkPolyDataReader>(path);
+    checkSTLFile(path);
+    data = readWithVtk<vtkSTLReader>(path);
   }
+  else if (ext == ".vtp")
+  {
+    checkVTKXMLFile(path);
+    data = readWithVtk<vtkXMLPolyDataReader>(path);
+  }
+  else if (ext == ".vtk") // VTK's legacy reader trusts the declared counts and the version line
+    return readLegacyVTK(path);
   else
     throw Error(path + ": unsupported file type '" + ext + "' (use .obj .ply .stl .off .vtp .vtk)");
   return toTriangleMesh(data, path);
+}
+} // namespace
+
+TriangleMesh readMeshFile(const std::string& path)
+{
+  try
+  {
+    return readMeshFileUnguarded(path);
+  }
+  catch (const std::bad_alloc&)
+  {
+    throw Error(path + ": the file declares more data than memory holds (corrupt header?)");
+  }
 }
 
 void writeMeshFile(const std::string& path, vtkPolyData* polyData)

@@ -3,6 +3,7 @@
 
 #include <clothtrack/base/Error.h>
 
+#include <vtkLogger.h>
 #include <vtkObject.h>
 #include <vtkOutputWindow.h>
 
@@ -80,6 +81,8 @@ int main(int argc, char** argv)
 {
   // VTK messages go to stderr as plain lines rather than to a window or a popup.
   vtkOutputWindow::GetInstance()->SetDisplayModeToAlwaysStdErr();
+  // The logger would print each of them a second time, in colour, with a time stamp.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   if (argc < 2)
   {
     printUsage(stderr);

@@ -32,6 +32,17 @@ file(WRITE ${WORK}/bad/a_1.obj "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n")
 expect_run(1 "a_1.obj: vertex 1 has a NaN" inspect ${WORK}/bad)
 file(WRITE ${WORK}/bad/a_1.obj "")
 expect_run(1 "a_1.obj: empty file" convert ${WORK}/bad -o ${WORK}/bad.pvd)
+file(WRITE ${WORK}/odd/mesh.xyz "0 0 0\n")
+expect_run(1 "mesh.xyz:1: '0 0 0' is not a supported mesh file" inspect ${WORK}/odd/mesh.xyz)
+# VTK's XML parser and executive printed their own blocks of lines before the error: now the
+# whole of stderr is the one line.
+file(WRITE ${WORK}/xml/t_0.vtp "<VTKFile type=\"PolyData\"><PolyData><Piece>")
+expect_run(1 "t_0.vtp: Error parsing XML" inspect ${WORK}/xml)
+execute_process(COMMAND ${APP} inspect ${WORK}/xml ERROR_VARIABLE err OUTPUT_QUIET)
+string(STRIP "${err}" err)
+if (err MATCHES "\n")
+  message(FATAL_ERROR "inspect of a broken VTP printed more than one line:\n${err}")
+endif ()
 
 # The built-in body model: written as a model file and as a shaped mesh.
 expect_run(0 "40 landmarks" body-model -o ${WORK}/model.vtp --mesh ${WORK}/body.obj --beta 1.0,-0.5)

@@ -69,6 +69,27 @@ class ReaderTest(unittest.TestCase):
             with self.assertRaises(RuntimeError):
                 clothtrack.read_sequence(os.path.join(folder, "missing"))
 
+    def test_files_that_crashed_vtk_raise(self):
+        # Legacy VTK with the 5.x cell layout under a 4.2 version line, and an XML file with a
+        # negative point count: both killed the interpreter inside VTK's readers.
+        with tempfile.TemporaryDirectory() as folder:
+            legacy = os.path.join(folder, "legacy_0.vtk")
+            with open(legacy, "w") as f:
+                f.write("# vtk DataFile Version 4.2\ntet\nASCII\nDATASET POLYDATA\n"
+                        "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\n"
+                        "POLYGONS 5 12\nOFFSETS vtktypeint64\n0 3 6 9 12\n"
+                        "CONNECTIVITY vtktypeint64\n0 1 2 0 1 3 0 2 3 1 2 3\n")
+            self.assertEqual(clothtrack.read_sequence(legacy)[0].GetNumberOfCells(), 4)
+            xml = os.path.join(folder, "negative_0.vtp")
+            with open(xml, "w") as f:
+                f.write('<VTKFile type="PolyData" version="1.0"><PolyData>'
+                        '<Piece NumberOfPoints="-1" NumberOfPolys="1"></Piece>'
+                        '</PolyData></VTKFile>')
+            with self.assertRaises(RuntimeError) as ctx:
+                clothtrack.read_sequence(xml)
+            self.assertIn("negative_0.vtp", str(ctx.exception))
+            self.assertIn("NumberOfPoints", str(ctx.exception))
+
     def test_vlasic_samba_has_175_frames(self):
         samba = os.path.join(SHARED, "vlasic-samba")
         if not os.path.isdir(samba):

@@ -194,6 +194,8 @@ TEST(SequenceReader, BadInputGivesClearErrors)
   expectReadError(inf, {inf, "NaN or infinite"});
   const std::string points = writeText(dir + "/points.obj", "v 0 0 0\nv 1 0 0\n");
   expectReadError(points, {points, "no face"});
+  const std::string huge = writeText(dir + "/huge.obj", "v 1e308 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  expectReadError(huge, {huge, "beyond any capture's size"});
   const std::string flat = writeText(dir + "/flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
   expectReadError(flat, {flat, "zero area"});
   const std::string badPly =

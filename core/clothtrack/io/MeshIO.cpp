@@ -1,8 +1,10 @@
 #include "MeshIO.h"
+#include "FileBytes.h"
 
 #include <clothtrack/base/Error.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -14,16 +16,6 @@ namespace clothtrack
 {
 namespace
 {
-std::string readWholeFile(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw Error(path + ": read error");
-  return buffer.str();
-}
-
 std::string where(const std::string& path, int line)
 {
   return path + ":" + std::to_string(line) + ": ";
@@ -53,7 +45,9 @@ bool parseDouble(const std::string& s, double& value)
   char* endp = nullptr;
   errno = 0;
   value = std::strtod(s.c_str(), &endp);
-  return endp != s.c_str() && *endp == '\0' && errno != ERANGE;
+  // ERANGE also flags an underflow to a denormal or zero, which is a fine coordinate.
+  const bool overflow = errno == ERANGE && std::abs(value) > 1.0;
+  return endp != s.c_str() && *endp == '\0' && !overflow;
 }
 
 bool parseInt(const std::string& s, long& value)
@@ -74,7 +68,9 @@ void addFan(const std::vector<int>& polygon, std::vector<int>& faces)
   }
 }
 
-TriangleMesh toMesh(const std::vector<double>& coords, const std::vector<int>& faces)
+} // namespace
+
+TriangleMesh meshFromArrays(const std::vector<double>& coords, const std::vector<int>& faces)
 {
   TriangleMesh mesh;
   mesh.V = Eigen::Map<const Points>(coords.data(), static_cast<Eigen::Index>(coords.size() / 3), 3);
@@ -82,11 +78,10 @@ TriangleMesh toMesh(const std::vector<double>& coords, const std::vector<int>& f
       Eigen::Map<const Triangles>(faces.data(), static_cast<Eigen::Index>(faces.size() / 3), 3);
   return mesh;
 }
-} // namespace
 
 TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
 {
-  const std::string text = readWholeFile(path);
+  const std::string text = readFileBytes(path);
   if (text.empty()) throw Error(path + ": empty file");
   if (text.find('\0') != std::string::npos)
     throw Error(path + ": not a text OBJ file (contains NUL bytes)");
@@ -153,12 +148,12 @@ TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
     }
     addFan(polygon, faces);
   }
-  return toMesh(coords, faces);
+  return meshFromArrays(coords, faces);
 }
 
 TriangleMesh readOFF(const std::string& path)
 {
-  const std::string text = readWholeFile(path);
+  const std::string text = readFileBytes(path);
   if (text.empty()) throw Error(path + ": empty file");
   // Token stream without comments, remembering line numbers for messages.
   std::vector<std::pair<std::string, int>> tokens;
@@ -193,6 +188,14 @@ TriangleMesh readOFF(const std::string& path)
     if (!parseInt(t.first, c) || c < 0)
       throw Error(where(path, t.second) + "malformed count '" + t.first + "'");
   }
+  // Each vertex takes 3 values and each face at least 4: a header that declares more than the
+  // file holds is refused before anything is allocated.
+  const size_t left = tokens.size() - pos;
+  if (static_cast<unsigned long>(counts[0]) > left / 3 ||
+      static_cast<unsigned long>(counts[1]) > (left - 3 * counts[0]) / 4)
+    throw Error(path + ": the header declares " + std::to_string(counts[0]) + " vertices and " +
+                std::to_string(counts[1]) + " faces, more than the file's " + std::to_string(left) +
+                " remaining values hold (truncated file or wrong header)");
   std::vector<double> coords(3 * counts[0]);
   for (long i = 0; i < 3 * counts[0]; ++i)
   {
@@ -225,7 +228,7 @@ TriangleMesh readOFF(const std::string& path)
     while (pos < tokens.size() && tokens[pos].second == line) ++pos;
     addFan(polygon, faces);
   }
-  return toMesh(coords, faces);
+  return meshFromArrays(coords, faces);
 }
 
 namespace

@@ -4,6 +4,7 @@
 #include <clothtrack/mesh/TriangleMesh.h>
 
 #include <string>
+#include <vector>
 
 namespace clothtrack
 {
@@ -16,6 +17,13 @@ TriangleMesh readOFF(const std::string& path);
 /// Stanford PLY, ASCII or binary (either endianness): vertex x, y, z and the face
 /// vertex_indices list; other elements and properties are skipped. Checked against truncation.
 TriangleMesh readPLY(const std::string& path);
+/// Legacy VTK POLYDATA, ASCII or binary, either cell layout (before and from version 5.0): the
+/// POLYGONS and TRIANGLE_STRIPS; vertices, lines and attributes are skipped. Every declared count
+/// is checked against the file before it is allocated.
+TriangleMesh readLegacyVTK(const std::string& path);
+
+/// A mesh from the flat arrays the readers collect: x y z per vertex, three indices per triangle.
+TriangleMesh meshFromArrays(const std::vector<double>& coords, const std::vector<int>& faces);
 
 void writeOBJ(const std::string& path, const TriangleMesh& mesh);
 void writeOFF(const std::string& path, const TriangleMesh& mesh);

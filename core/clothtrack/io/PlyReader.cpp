@@ -1,5 +1,6 @@
 // Strict Stanford PLY reader: every size is checked against the file so that a truncated or
 // corrupt file is an error, not a crash.
+#include "FileBytes.h"
 #include "MeshIO.h"
 #include <clothtrack/base/Error.h>
 
@@ -109,11 +110,7 @@ private:
 
 TriangleMesh readPLY(const std::string& path)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string data = buffer.str();
+  const std::string data = readFileBytes(path);
   if (data.empty()) throw Error(path + ": empty file");
   if (data.compare(0, 3, "ply") != 0)
     throw Error(path + ": not a PLY file (does not start with 'ply')");
@@ -251,10 +248,6 @@ TriangleMesh readPLY(const std::string& path)
       if (isVertex) coords.insert(coords.end(), point, point + 3);
     }
   }
-  TriangleMesh mesh;
-  mesh.V = Eigen::Map<const Points>(coords.data(), static_cast<Eigen::Index>(coords.size() / 3), 3);
-  mesh.F =
-      Eigen::Map<const Triangles>(faces.data(), static_cast<Eigen::Index>(faces.size() / 3), 3);
-  return mesh;
+  return meshFromArrays(coords, faces);
 }
 } // namespace clothtrack

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 namespace clothtrack
@@ -20,6 +21,16 @@ void validateMesh(const TriangleMesh& mesh, const std::string& name)
   for (int i = 0; i < mesh.numVertices(); ++i)
     if (!mesh.V.row(i).allFinite())
       throw Error(name + ": vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+  // Areas and normals square and multiply coordinates: far beyond any capture's unit they
+  // overflow, and every face would look degenerate.
+  const double largest = mesh.V.cwiseAbs().maxCoeff();
+  if (largest > 1e12)
+  {
+    char value[32];
+    std::snprintf(value, sizeof(value), "%g", largest);
+    throw Error(name + ": a coordinate of " + value +
+                " is beyond any capture's size (corrupt file?)");
+  }
   for (int f = 0; f < mesh.numFaces(); ++f)
     for (int k = 0; k < 3; ++k)
       if (mesh.F(f, k) < 0 || mesh.F(f, k) >= mesh.numVertices())

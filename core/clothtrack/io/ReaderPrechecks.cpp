@@ -1,0 +1,81 @@
+#include "ReaderPrechecks.h"
+#include "FileBytes.h"
+
+#include <clothtrack/base/Error.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace clothtrack
+{
+namespace
+{
+bool startsWithSolid(const std::string& data)
+{
+  size_t p = 0;
+  while (p < data.size() &&
+         (data[p] == ' ' || data[p] == '\t' || data[p] == '\r' || data[p] == '\n'))
+    ++p;
+  return data.compare(p, 5, "solid") == 0;
+}
+} // namespace
+
+void checkSTLFile(const std::string& path)
+{
+  const std::string data = readFileBytes(path, /*text=*/false);
+  // Binary: little-endian triangle count after the 80-byte header.
+  uint32_t declared = 0;
+  if (data.size() >= 84)
+  {
+    const auto* b = reinterpret_cast<const unsigned char*>(data.data() + 80);
+    declared = b[0] | (b[1] << 8) | (b[2] << 16) | (static_cast<uint32_t>(b[3]) << 24);
+    if (84 + 50 * static_cast<uint64_t>(declared) == data.size())
+    {
+      if (declared == 0) throw Error(path + ": binary STL with no triangle");
+      return;
+    }
+  }
+  // Not a consistent binary file: ASCII, or a binary one whose count disagrees with its size. A
+  // binary header may itself start with "solid", so a NUL byte decides.
+  if (startsWithSolid(data) && data.find('\0') == std::string::npos) return;
+  if (data.size() < 84) throw Error(path + ": not an STL file (too short, no 'solid' header)");
+  throw Error(path + ": binary STL header declares " + std::to_string(declared) +
+              " triangles but the file has room for " + std::to_string((data.size() - 84) / 50) +
+              " (truncated or corrupt file)");
+}
+
+void checkVTKXMLFile(const std::string& path)
+{
+  const std::string data = readFileBytes(path, /*text=*/false);
+  // The XML part ends where raw appended data begins.
+  const size_t xmlEnd = std::min(data.size(), data.find("<AppendedData"));
+  const std::string key = "NumberOf";
+  for (size_t p = data.find(key); p < xmlEnd; p = data.find(key, p + 1))
+  {
+    const size_t quote = data.find('"', p);
+    const size_t eq = data.find('=', p);
+    if (quote >= xmlEnd || eq >= quote) continue;
+    const std::string name = data.substr(p, eq - p);
+    if (name.find_first_of(" \t\n<>") != std::string::npos) continue;
+    const char* start = data.c_str() + quote + 1;
+    char* end = nullptr;
+    errno = 0;
+    const long long value = std::strtoll(start, &end, 10);
+    if (end == start || *end != '"' || errno == ERANGE || value < 0)
+      throw Error(path + ": " + name + " is '" +
+                  std::string(start, std::strcspn(start, "\"")).substr(0, 30) +
+                  "', not a count (corrupt file)");
+    // 3 coordinates of at least 4 bytes each; no compressor of VTK's shrinks data more than
+    // about a thousand times.
+    if (name == "NumberOfPoints" && static_cast<double>(value) * 12.0 / 1100.0 > data.size())
+      throw Error(path + ": NumberOfPoints is " + std::to_string(value) +
+                  ", more than the file's " + std::to_string(data.size()) +
+                  " bytes can hold (corrupt file)");
+  }
+}
+} // namespace clothtrack
