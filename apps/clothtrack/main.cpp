@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <map>
 
 namespace
@@ -117,6 +118,14 @@ int main(int argc, char** argv)
   catch (const clothtrack::Error& e)
   {
     std::fprintf(stderr, "clothtrack %s: error: %s\n", name.c_str(), e.what());
+  }
+  catch (const std::filesystem::filesystem_error& e)
+  {
+    // "filesystem error: cannot create directories: Not a directory [out/work]" said as
+    // "out/work: Not a directory".
+    const std::string path = e.path1().empty() ? std::string("a file") : e.path1().string();
+    std::fprintf(stderr, "clothtrack %s: error: %s: %s\n", name.c_str(), path.c_str(),
+                 e.code().message().c_str());
   }
   catch (const std::exception& e)
   {

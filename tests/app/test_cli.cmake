@@ -32,6 +32,12 @@ file(WRITE ${WORK}/bad/a_1.obj "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n")
 expect_run(1 "a_1.obj: vertex 1 has a NaN" inspect ${WORK}/bad)
 file(WRITE ${WORK}/bad/a_1.obj "")
 expect_run(1 "a_1.obj: empty file" convert ${WORK}/bad -o ${WORK}/bad.pvd)
+# Paths the file system refuses: the path and the reason, not the library's exception text.
+file(WRITE ${WORK}/plain_file "")
+expect_run(1 "plain_file/work: Not a directory" align ${WORK}/seq -o ${WORK}/plain_file --no-report)
+file(MAKE_DIRECTORY ${WORK}/loops)
+file(CREATE_LINK loop ${WORK}/loops/loop SYMBOLIC)
+expect_run(1 "loop: Too many levels of symbolic links" inspect ${WORK}/loops)
 file(WRITE ${WORK}/odd/mesh.xyz "0 0 0\n")
 expect_run(1 "mesh.xyz:1: '0 0 0' is not a supported mesh file" inspect ${WORK}/odd/mesh.xyz)
 # VTK's XML parser and executive printed their own blocks of lines before the error: now the
