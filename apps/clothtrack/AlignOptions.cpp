@@ -221,6 +221,7 @@ std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode
   s.startFromBody = !values["no-body-start"].as<bool>();
   s.selection.templateCriterion = parseTemplateCriterion(criterion);
   check(s);
+  resolveAutomatic(s.sequence, s.input);
   return s;
 }
 } // namespace clothtrack::app

@@ -21,6 +21,7 @@
 #include <clothtrack/fit/MotionPrediction.h>
 #include <clothtrack/fit/SequenceFit.h>
 #include <clothtrack/io/FrameList.h>
+#include <clothtrack/mesh/SubjectSize.h>
 #include <clothtrack/pipeline/BodyStage.h>
 #include <clothtrack/pipeline/BodyStartPrediction.h>
 #include <clothtrack/pipeline/CorrespondenceStage.h>
@@ -190,6 +191,8 @@ Input readInput(const AlignSettings& s)
   progress.finish();
   warnAboutGaps(in.files);
   if (in.count() < 2) throw UsageError{s.input + ": at least two readable frames are needed"};
+  for (const std::string& w : subjectWarnings(in.frames.front()))
+    std::fprintf(stderr, "warning: %s: %s\n", in.files.front().c_str(), w.c_str());
   in.truth = loadGroundTruth(in.truthFiles, conventions);
   // Markers are read now, so that a bad file stops the run before the long stages.
   if (!s.markersPath.empty()) in.markers = selectedMarkers(s.markersPath, in.frameNumber);
@@ -229,11 +232,9 @@ void runBodyStage(Run& run)
   const int n = run.input.count();
   const fs::path cache = run.work / "landmarks.json";
   const BodyStageOptions options;
-  run.landmarkKey = {{"files", run.input.files},
-                     {"model", s.modelPath},
-                     {"up", s.sequence.up},
-                     {"unit", s.sequence.unit},
-                     {"body_fit", bodyStageKey(options)}};
+  run.landmarkKey = {{"files", run.input.files},  {"model", s.modelPath},
+                     {"up", s.sequence.up},       {"unit", s.sequence.unit},
+                     {"scale", s.sequence.scale}, {"body_fit", bodyStageKey(options)}};
   run.body = {};
   run.body.landmarks.resize(n);
   if (!s.needLandmarks())
@@ -507,6 +508,7 @@ nlohmann::json evaluate(const Run& run)
   metrics["files"] = in.files;
   metrics["unit"] = s.sequence.unit;
   metrics["up"] = s.sequence.up;
+  metrics["unit_scale"] = toConventions(s.sequence).unitScale;
   int resumed = 0;
   for (const FrameFit& f : run.fits) resumed += f.resumed;
   metrics["resumed_frames"] = resumed;

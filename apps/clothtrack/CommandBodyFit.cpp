@@ -77,6 +77,7 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
   if (fit.samples < 50) throw UsageError{"--samples must be at least 50"};
   if (fit.shapeFrames < 1) throw UsageError{"--shape-frames must be at least 1"};
+  resolveAutomatic(s.sequence, s.input);
   return s;
 }
 

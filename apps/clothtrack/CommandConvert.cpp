@@ -39,6 +39,7 @@ int runConvert(const Args& args)
   if (!parseOptions(args, "clothtrack convert INPUT -o OUT.pvd [options]", options, positional,
                     values))
     return 0;
+  resolveAutomatic(seq, input);
   const FrameConventions conventions = toConventions(seq);
   if (fs::path(output).extension() != ".pvd")
     throw UsageError{"--output must end in .pvd (got '" + output + "')"};

@@ -129,6 +129,9 @@ int runEval(const Args& args)
     j = metrics.at("template_frame").get<int>();
     seq.unit = metrics.at("unit").get<std::string>();
     seq.up = metrics.at("up").get<std::string>();
+    // A --scale run: its metres per file unit replace the unit (older runs have no such key).
+    if (metrics.contains("unit_scale") && metrics.at("unit_scale").get<double>() != 1.0)
+      seq = {"m", seq.up, metrics.at("unit_scale").get<double>(), seq.fps};
   }
   catch (const nlohmann::json::exception&)
   {

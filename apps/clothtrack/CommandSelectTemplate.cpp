@@ -144,6 +144,7 @@ int runFrameTable(const Args& args, bool choose)
   if (!parseOptions(args, std::string("clothtrack ") + name + " INPUT [options]", options,
                     positional, values))
     return 0;
+  resolveAutomatic(seq, input);
   const FrameConventions conventions = toConventions(seq);
   if (selection.persistence < 1) throw UsageError{"--persistence must be at least 1"};
   if (choose) selection.templateCriterion = parseTemplateCriterion(criterionName);

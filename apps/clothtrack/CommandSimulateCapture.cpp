@@ -53,6 +53,7 @@ int runSimulateCapture(const Args& args)
   if (!parseOptions(args, "clothtrack simulate-capture INPUT -o OUT [options]", options, positional,
                     values))
     return 0;
+  resolveAutomatic(seq, input);
   const FrameConventions conventions = toConventions(seq);
   if (!(capture.voxelSize >= 0.002 && capture.voxelSize <= 0.2))
     throw UsageError{"--voxel must be between 0.002 and 0.2 metres"};

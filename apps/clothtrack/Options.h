@@ -22,12 +22,18 @@ bool parseOptions(const Args& args, const std::string& usage, po::options_descri
 /// Options shared by every command that reads a sequence.
 struct SequenceOptions
 {
-  std::string unit = "m";
-  std::string up = "y";
+  std::string unit = "m"; ///< m, dm, cm, mm, or auto until resolveAutomatic
+  std::string up = "y";   ///< x, y, z, or auto until resolveAutomatic
+  double scale = 0.0;     ///< metres per file unit when given; replaces --unit
   double fps = 25.0;
 };
 void addSequenceOptions(po::options_description& options, SequenceOptions& target);
-/// Checks the values (UsageError when wrong) and converts them to reader conventions.
+/// Replaces "auto" in --unit and --up by what the first frame of `input` suggests (the longest
+/// side up; the unit that makes it a person's height) and says so on stderr, so that all that
+/// follows (the work cache, metrics.json) sees the values used. UsageError when no unit fits.
+void resolveAutomatic(SequenceOptions& options, const std::string& input);
+/// Checks the values (UsageError when wrong, or still auto) and converts them to reader
+/// conventions.
 clothtrack::FrameConventions toConventions(const SequenceOptions& options);
 
 /// --template-criterion: "rest-pose" or "area-ratio" (UsageError otherwise).
