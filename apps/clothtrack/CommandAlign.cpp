@@ -135,8 +135,28 @@ struct Run
   std::vector<FrameFit> fits;
   std::vector<Eigen::VectorXd> errors;
   int verticesWithTruth = 0;
+  int reusedCorrespondences = 0; ///< frames whose correspondences an earlier run left
   const TriangleMesh& templateMesh() const { return input.frames[templateFrame]; }
 };
+
+/// Removes the partial files (NAME.part, renamed to NAME once complete) that a run killed while
+/// writing left in `folders`, and says how many: the next write would replace them anyway, but
+/// until then they look like results.
+void removeLeftoverParts(const std::vector<fs::path>& folders)
+{
+  int removed = 0;
+  for (const fs::path& folder : folders)
+  {
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(folder, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+      if (it->is_regular_file(ec) && it->path().extension() == ".part" &&
+          fs::remove(it->path(), ec))
+        ++removed;
+  }
+  if (removed > 0)
+    std::fprintf(stderr, "removed %d partial files left by an interrupted run\n", removed);
+}
 
 /// Says so when frames are missing from a numbered sequence: the motion jumps there. Files listed
 /// in another order than their numbers (a list file) are a chosen set of poses: nothing is missing.
@@ -348,9 +368,16 @@ void runCorrespondenceStage(Run& run, const AlignedOutput& output)
   const int nv = run.templateMesh().numVertices();
   std::vector<int> missing;
   for (int k = 0; k < run.input.count(); ++k)
-    if (k != run.templateFrame && !fs::exists(output.framePath(run.input.frameNumber[k])) &&
-        !readTargets(targetPath(run, k).string(), run.input.files[k], nv))
-      missing.push_back(k);
+    if (k != run.templateFrame && !fs::exists(output.framePath(run.input.frameNumber[k])))
+    {
+      if (readTargets(targetPath(run, k).string(), run.input.files[k], nv))
+        ++run.reusedCorrespondences;
+      else
+        missing.push_back(k);
+    }
+  if (run.reusedCorrespondences > 0)
+    std::fprintf(stderr, "correspond: correspondences of %d frames reused from %s\n",
+                 run.reusedCorrespondences, folder.c_str());
   if (missing.empty()) return;
   if (s.mode == AlignMode::FitOnly)
     throw UsageError{folder.string() + ": no correspondences for " +
@@ -512,6 +539,7 @@ nlohmann::json evaluate(const Run& run)
   int resumed = 0;
   for (const FrameFit& f : run.fits) resumed += f.resumed;
   metrics["resumed_frames"] = resumed;
+  metrics["reused_correspondence_frames"] = run.reusedCorrespondences;
   metrics["threads"] = threadCount();
   metrics["solver"] = s.solver;
   metrics["predict_radius_m"] = s.prediction.predictRadius;
@@ -594,6 +622,7 @@ int alignCommand(const Args& args, AlignMode mode)
   run.work = s.workDir.empty() ? run.out / "work" : fs::path(s.workDir);
   fs::create_directories(run.work);
   fs::create_directories(run.out);
+  removeLeftoverParts({run.out, run.work});
   timed(run, "body_fit", [&] { runBodyStage(run); });
   timed(run, "select_template", [&] { runTemplateStage(run); });
   const AlignedOutput output(run.out, run.templateMesh());
