@@ -13,9 +13,12 @@ CT_PACKAGES="cmake ninja-build g++ pkg-config libeigen3-dev libflann-dev liblz4-
 ct_log() { printf '[clothtrack] %s\n' "$*" >&2; }
 ct_die() { printf '[clothtrack] error: %s\n' "$*" >&2; exit 1; }
 
-ct_install_dependencies() {
+ct_install_dependencies() { ct_install_packages $CT_PACKAGES; }
+
+# Installs those of the given Debian packages that are missing.
+ct_install_packages() {
   local missing=() pkg
-  for pkg in $CT_PACKAGES; do
+  for pkg in "$@"; do
     dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
   done
   [ ${#missing[@]} -eq 0 ] && return 0

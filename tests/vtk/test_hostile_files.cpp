@@ -11,12 +11,14 @@
 #include <vtkPolyDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <clothtrack/mesh/MeshValidation.h>
 #include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -215,4 +217,34 @@ TEST(HostileFiles, TextQuirksReadAsMeant)
   EXPECT_GT(tiny.V(0, 0), 0.0);
   expectError(writeText(dir + "/overflow.obj", "v 1e400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
               "malformed vertex");
+}
+
+TEST(HostileFiles, EveryFuzzFindingReadsOrIsRefused)
+{
+  // tests/fuzz/regressions/FORMAT/: each file that once crashed, hung or exhausted memory in a
+  // reader (scripts/fuzz keeps new ones). Reading must end in a mesh or an Error, nothing else.
+  const std::filesystem::path root(CLOTHTRACK_FUZZ_REGRESSIONS);
+  if (!std::filesystem::is_directory(root)) GTEST_SKIP() << "no folder " << root;
+  const std::string dir = scratchDir("hostile-regressions");
+  int files = 0;
+  for (const auto& format : std::filesystem::directory_iterator(root))
+    for (const auto& entry : std::filesystem::directory_iterator(format.path()))
+    {
+      // The reader goes by the extension: the folder's name, whatever the file is called.
+      const std::string path =
+          dir + "/" + entry.path().stem().string() + "." + format.path().filename().string();
+      std::filesystem::copy_file(entry.path(), path,
+                                 std::filesystem::copy_options::overwrite_existing);
+      try
+      {
+        TriangleMesh mesh = readMeshFile(path);
+        validateAndClean(mesh, path);
+      }
+      catch (const Error& e)
+      {
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      }
+      ++files;
+    }
+  EXPECT_GE(files, 10);
 }

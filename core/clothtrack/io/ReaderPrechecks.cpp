@@ -4,6 +4,7 @@
 #include <clothtrack/base/Error.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstdlib>
@@ -40,9 +41,16 @@ void checkSTLFile(const std::string& path)
       return;
     }
   }
-  // Not a consistent binary file: ASCII, or a binary one whose count disagrees with its size. A
-  // binary header may itself start with "solid", so a NUL byte decides.
-  if (startsWithSolid(data) && data.find('\0') == std::string::npos) return;
+  // Not a consistent binary file: ASCII, or a binary one whose count disagrees with its size.
+  // VTK's reader takes a file with a few bytes other than printable text and line breaks for
+  // binary, whatever its first word: any such file must be a consistent binary one.
+  const bool ascii = std::all_of(data.begin(), data.end(),
+                                 [](char c)
+                                 {
+                                   const auto byte = static_cast<unsigned char>(c);
+                                   return (byte >= 32 && byte <= 126) || std::isspace(byte);
+                                 });
+  if (startsWithSolid(data) && ascii) return;
   if (data.size() < 84) throw Error(path + ": not an STL file (too short, no 'solid' header)");
   throw Error(path + ": binary STL header declares " + std::to_string(declared) +
               " triangles but the file has room for " + std::to_string((data.size() - 84) / 50) +
