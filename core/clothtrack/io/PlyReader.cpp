@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -230,10 +231,13 @@ TriangleMesh readPLY(const std::string& path)
           const double index = cursor.read(prop.type);
           if (isFace && static_cast<int>(p) == indexProperty)
           {
-            if (!haveVertices || index < 0 || index >= numVertices)
-              throw Error(path + ": face " + std::to_string(i) + " uses vertex index " +
-                          std::to_string(static_cast<long>(index)) + ", out of range (file has " +
-                          std::to_string(numVertices) + " vertices)");
+            if (!haveVertices || !(index >= 0 && index < numVertices))
+            {
+              char text[32]; // any double: the file's value may exceed every integer type
+              std::snprintf(text, sizeof(text), "%.17g", index);
+              throw Error(path + ": face " + std::to_string(i) + " uses vertex index " + text +
+                          ", out of range (file has " + std::to_string(numVertices) + " vertices)");
+            }
             polygon.push_back(static_cast<int>(index));
           }
         }

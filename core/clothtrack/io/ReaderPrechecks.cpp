@@ -4,7 +4,6 @@
 #include <clothtrack/base/Error.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstdlib>
@@ -48,7 +47,8 @@ void checkSTLFile(const std::string& path)
                                  [](char c)
                                  {
                                    const auto byte = static_cast<unsigned char>(c);
-                                   return (byte >= 32 && byte <= 126) || std::isspace(byte);
+                                   return (byte >= 32 && byte <= 126) || byte == '\n' ||
+                                          byte == '\r' || byte == '\t';
                                  });
   if (startsWithSolid(data) && ascii) return;
   if (data.size() < 84) throw Error(path + ": not an STL file (too short, no 'solid' header)");

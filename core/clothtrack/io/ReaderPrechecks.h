@@ -8,7 +8,7 @@ namespace clothtrack
 {
 /// A binary STL (80-byte header, triangle count, 50 bytes a triangle) must hold exactly the
 /// triangles its count declares; an ASCII STL must start with `solid` and hold only printable
-/// text and white space (VTK's reader takes any other file for binary).
+/// text, tabs and line breaks (VTK's reader takes any other file for binary).
 void checkSTLFile(const std::string& path);
 
 /// The `NumberOf...` attributes of a VTK XML file (points, cells, components, tuples) must be
