@@ -89,6 +89,7 @@ TEST(TemplateSelection, RestPoseOnlyFromBodiesThatExplainTheirFrame)
     BodyFrameFit f;
     f.pose.rotations(LeftElbow, 0) = bend[k];
     f.frameDistance = explained[k];
+    f.continuesPrevious = false; // unrelated poses: each frame's distance is its own
     body.frames.push_back(f);
   }
   body.frames[4].status = BodyFitStatus::Poor;
@@ -101,4 +102,29 @@ TEST(TemplateSelection, RestPoseOnlyFromBodiesThatExplainTheirFrame)
   EXPECT_EQ(selectTemplate(frames, {}, d).chosen, 1);
   // Without the guard the collapsed body wins.
   EXPECT_EQ(selectTemplate(frames, {}, restPoseDistances(body, 10.0)).chosen, 2);
+}
+
+TEST(TemplateSelection, RestPoseConfirmedByTheNeighbouringFrames)
+{
+  // Frame 2's fit dips towards the rest pose between two bent neighbours that it continues;
+  // frames 4-6 hold a pose a little further from it. The dip counts at its neighbours' distance.
+  BodyFitResult body;
+  const double own[] = {0.9, 0.8, 0.2, 0.7, 0.45, 0.4, 0.42};
+  body.frames.resize(7);
+  std::vector<double> distances(own, own + 7);
+  std::vector<double> d = confirmedByNeighbours(body.frames, distances);
+  const double confirmed[] = {0.9, 0.9, 0.8, 0.7, 0.7, 0.45, 0.42};
+  for (int k = 0; k < 7; ++k) EXPECT_DOUBLE_EQ(d[k], confirmed[k]) << "frame " << k;
+  const std::vector<FrameTopology> frames(7, frame(1, 0, 1.0));
+  EXPECT_EQ(selectTemplate(frames, {}, d).chosen, 6);
+  EXPECT_EQ(selectTemplate(frames, {}, distances).chosen, 2);
+
+  // A doubtful neighbour (NaN) confirms nothing; a frame that starts anew (a cut) is not
+  // confirmed by the frame before it, nor does it confirm that frame.
+  distances[1] = NAN;
+  body.frames[3].continuesPrevious = false;
+  d = confirmedByNeighbours(body.frames, distances);
+  EXPECT_TRUE(std::isnan(d[1]));
+  EXPECT_DOUBLE_EQ(d[2], 0.2);
+  EXPECT_DOUBLE_EQ(d[3], 0.7);
 }

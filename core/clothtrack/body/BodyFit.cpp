@@ -249,9 +249,29 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
     fitter.fitFrame(surfaces.get(i), init, fit.continuesPrevious ? previous : nullptr, finalStages,
                     fit, fit.continuesPrevious);
     if (previous && fit.continuesPrevious)
-      fitter.refitFromNeighbour(surfaces.get(i), *previous, finalStages, fit);
+      fitter.refitFromNeighbour(surfaces.get(i), *previous, finalStages, fit,
+                                /*coverAsMuch=*/false);
     if (fit.status == BodyFitStatus::Poor && fit.message.empty()) fit.message = "poor fit";
     previous = &fit.pose;
+    surfaces.release(i);
+    progress.advance(1.0);
+  }
+}
+
+/// Pass 2 backwards: each frame that its successor continues is also started from the
+/// successor's final pose, and the fit that explains the frame better is kept. A forward track
+/// that fell behind a fast motion (a squat's deepest frames) is caught from the other side.
+void backwardPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
+                  const BodyFitOptions& options, std::vector<BodyFrameFit>& fits,
+                  FitProgress& progress)
+{
+  const std::vector<BodyFitStage> finalStages(options.stages.end() - 1, options.stages.end());
+  for (size_t k = usable.size(); k-- > 0;)
+  {
+    const int i = usable[k];
+    if (k + 1 < usable.size() && fits[usable[k + 1]].continuesPrevious)
+      fitter.refitFromNeighbour(surfaces.get(i), fits[usable[k + 1]].pose, finalStages, fits[i],
+                                /*coverAsMuch=*/true);
     surfaces.release(i);
     progress.advance(1.0);
   }
@@ -307,7 +327,7 @@ BodyFitResult fitBodySequence(const BodyModel& model,
   result.frames.resize(n);
   const std::vector<int> usable = usableFrames(frames, result.frames);
   FitProgress fitProgress(progress,
-                          2.0 * n + options.shapeRounds * std::max(1, options.shapeFrames));
+                          3.0 * n + options.shapeRounds * std::max(1, options.shapeFrames));
   FrameSurfaces surfaces(frames, options.extremityPersistence);
   SequenceFitter fitter(model, options);
 
@@ -317,6 +337,7 @@ BodyFitResult fitBodySequence(const BodyModel& model,
   result.beta = fitter.samples().beta();
   fitter.setReachTolerance(options.reachTolerance);
   finalPass(fitter, surfaces, usable, options, result.frames, fitProgress);
+  backwardPass(fitter, surfaces, usable, options, result.frames, fitProgress);
   const double limit = unexplainedLimit(options, result.frames);
   for (BodyFrameFit& fit : result.frames) flagIfUnexplained(limit, fit);
   recoverPoorFits(fitter, surfaces, usable, limit, result.frames);

@@ -103,7 +103,7 @@ struct BodyFitOptions
 
 /// Changes whenever the fit's results change for the same options, so that results cached by an
 /// older release are not reused.
-inline constexpr int kBodyFitRevision = 4;
+inline constexpr int kBodyFitRevision = 5;
 
 enum class BodyFitStatus : int
 {

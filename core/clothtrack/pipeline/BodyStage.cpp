@@ -5,6 +5,8 @@
 #include <clothtrack/body/OrientedLandmarks.h>
 #include <clothtrack/mesh/SurfaceLocator.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -44,10 +46,25 @@ std::vector<double> restPoseDistances(const BodyFitResult& body, double explaine
 {
   const std::optional<double> median = medianFrameDistance(body.frames);
   const double limit = median ? explainedRatio * *median : std::numeric_limits<double>::infinity();
-  std::vector<double> out;
+  std::vector<double> own;
   for (const BodyFrameFit& f : body.frames)
-    out.push_back(f.frameDistance <= limit ? fittedRestPoseDistance(f.status, f.pose)
+    own.push_back(f.frameDistance <= limit ? fittedRestPoseDistance(f.status, f.pose)
                                            : std::numeric_limits<double>::quiet_NaN());
+  return confirmedByNeighbours(body.frames, own);
+}
+
+std::vector<double> confirmedByNeighbours(const std::vector<BodyFrameFit>& fits,
+                                          const std::vector<double>& own)
+{
+  std::vector<double> out = own;
+  for (size_t i = 0; i < own.size(); ++i)
+  {
+    if (!std::isfinite(own[i])) continue;
+    if (i > 0 && fits[i].continuesPrevious && std::isfinite(own[i - 1]))
+      out[i] = std::max(out[i], own[i - 1]);
+    if (i + 1 < own.size() && fits[i + 1].continuesPrevious && std::isfinite(own[i + 1]))
+      out[i] = std::max(out[i], own[i + 1]);
+  }
   return out;
 }
 } // namespace clothtrack

@@ -42,6 +42,15 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
 /// and explains its frame nearly as well as the sequence's median fit does (frameDistance at
 /// most `explainedRatio` times the median of the ok fits). The template frame's body binds the
 /// template for every frame; a body that fell towards the rest pose, leaving a raised limb
-/// unexplained, looked like the best template.
+/// unexplained, looked like the best template. The distances are then confirmedByNeighbours.
 std::vector<double> restPoseDistances(const BodyFitResult& body, double explainedRatio = 1.3);
+
+/// Each finite distance in `own` raised to the largest finite one of the neighbours that the
+/// frame is tracked with (its predecessor if it continues it, its successor if that continues
+/// it). A pose holds for a moment, not a single frame: a one-frame dip towards the rest pose
+/// between two bent neighbours is more often a wrong fit than a true pose (pjump's frame 23 at
+/// 6.6 rad between 8.5 and 7.0, a template 9 cm off). Frames of a collection of unrelated poses
+/// continue nothing and keep their own distance.
+std::vector<double> confirmedByNeighbours(const std::vector<BodyFrameFit>& fits,
+                                          const std::vector<double>& own);
 } // namespace clothtrack
