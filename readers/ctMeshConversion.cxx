@@ -198,6 +198,14 @@ TriangleMesh readMeshFileUnguarded(const std::string& path)
 }
 } // namespace
 
+vtkSmartPointer<vtkPolyData> readVTPFile(const std::string& path)
+{
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw Error(path + ": no such file");
+  checkVTKXMLFile(path);
+  return readWithVtk<vtkXMLPolyDataReader>(path);
+}
+
 TriangleMesh readMeshFile(const std::string& path)
 {
   try

@@ -27,6 +27,10 @@ CTREADERS_EXPORT vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mes
 /// readers (no validation: see clothtrack::validateAndClean). Throws Error naming the file.
 CTREADERS_EXPORT TriangleMesh readMeshFile(const std::string& path);
 
+/// Reads a VTK XML PolyData file (.vtp) with its arrays, guarded as readMeshFile reads it.
+/// Throws Error naming the file.
+CTREADERS_EXPORT vtkSmartPointer<vtkPolyData> readVTPFile(const std::string& path);
+
 /// Writes a mesh in the format given by the extension (.obj .off .ply .stl .vtp .vtk),
 /// through a temporary file renamed at the end so that no half-written file is left behind.
 CTREADERS_EXPORT void writeMeshFile(const std::string& path, vtkPolyData* polyData);

@@ -17,6 +17,16 @@ namespace clothtrack::app
 namespace
 {
 constexpr char kTargetsMagic[8] = {'C', 'T', 'T', 'G', 'T', '0', '0', '1'};
+constexpr char kFitterStateMagic[8] = {'C', 'T', 'F', 'S', 'T', '0', '0', '1'};
+
+template <class T> void put(std::ostream& out, const T& value)
+{
+  out.write(reinterpret_cast<const char*>(&value), sizeof(value));
+}
+template <class T> bool get(std::istream& in, T& value)
+{
+  return static_cast<bool>(in.read(reinterpret_cast<char*>(&value), sizeof(value)));
+}
 
 nlohmann::json vec(const Vec3& v)
 {
@@ -144,5 +154,59 @@ std::optional<VertexTargets> readTargets(const std::string& path, const std::str
     targets.position.row(i) << p[0], p[1], p[2];
   }
   return targets;
+}
+
+void writeFitterState(const std::string& path, const TemplateFitterState& state)
+{
+  const std::string part = path + ".part";
+  {
+    std::ofstream out(part, std::ios::binary);
+    out.write(kFitterStateMagic, sizeof(kFitterStateMagic));
+    put(out, static_cast<std::uint32_t>(state.vertices));
+    put(out, static_cast<std::uint32_t>(state.stages.size()));
+    for (const TemplateFitterState::Stage& stage : state.stages)
+    {
+      put(out, static_cast<std::uint8_t>(stage.factored));
+      put(out, static_cast<std::uint8_t>(stage.stale));
+      put(out, stage.edgeWeight);
+      put(out, static_cast<std::uint64_t>(stage.blocks.size()));
+      out.write(reinterpret_cast<const char*>(stage.blocks.data()),
+                static_cast<std::streamsize>(stage.blocks.size() * sizeof(double)));
+    }
+    if (!out.flush()) throw UsageError{path + ": cannot write file"};
+  }
+  std::error_code error;
+  std::filesystem::rename(part, path, error);
+  if (error) throw UsageError{path + ": cannot write file (" + error.message() + ")"};
+}
+
+std::optional<TemplateFitterState> readFitterState(const std::string& path, int templateVertices)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  char magic[sizeof(kFitterStateMagic)];
+  std::uint32_t vertices = 0, stages = 0;
+  if (!in.read(magic, sizeof(magic)) || std::memcmp(magic, kFitterStateMagic, sizeof(magic)) != 0 ||
+      !get(in, vertices) || vertices != static_cast<std::uint32_t>(templateVertices) ||
+      !get(in, stages) || stages > 64)
+    return std::nullopt;
+  TemplateFitterState state;
+  state.vertices = templateVertices;
+  state.stages.resize(stages);
+  for (TemplateFitterState::Stage& stage : state.stages)
+  {
+    std::uint8_t factored = 0, stale = 0;
+    std::uint64_t count = 0;
+    if (!get(in, factored) || !get(in, stale) || !get(in, stage.edgeWeight) || !get(in, count) ||
+        (count != 0 && count != 10 * static_cast<std::uint64_t>(templateVertices)))
+      return std::nullopt;
+    stage.factored = factored != 0;
+    stage.stale = stale != 0;
+    stage.blocks.resize(count);
+    if (!in.read(reinterpret_cast<char*>(stage.blocks.data()),
+                 static_cast<std::streamsize>(count * sizeof(double))))
+      return std::nullopt;
+  }
+  return state;
 }
 } // namespace clothtrack::app

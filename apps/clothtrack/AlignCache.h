@@ -41,4 +41,9 @@ void writeTargets(const std::string& path, const std::string& frameFile,
 /// Empty when missing, for another frame file or another template size.
 std::optional<VertexTargets> readTargets(const std::string& path, const std::string& frameFile,
                                          int templateVertices);
+/// The template fit's solver state after one frame (TemplateFitterState): a run stopped after
+/// that frame continues from it exactly as it would have without the stop.
+void writeFitterState(const std::string& path, const TemplateFitterState& state);
+/// Empty when missing, truncated or made for another template size.
+std::optional<TemplateFitterState> readFitterState(const std::string& path, int templateVertices);
 } // namespace clothtrack::app

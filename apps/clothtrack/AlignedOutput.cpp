@@ -2,9 +2,13 @@
 
 #include "ctMeshConversion.h"
 
+#include <clothtrack/base/Error.h>
+
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <cstdio>
@@ -22,6 +26,14 @@ void addArray(vtkPolyData* mesh, const char* name, const Eigen::Ref<const Eigen:
   for (Eigen::Index i = 0; i < values.rows(); ++i)
     for (Eigen::Index c = 0; c < values.cols(); ++c) array->SetTypedComponent(i, c, values(i, c));
   mesh->GetPointData()->AddArray(array);
+}
+
+void addFieldValue(vtkPolyData* mesh, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  mesh->GetFieldData()->AddArray(array);
 }
 
 std::string frameFileName(int frameNumber)
@@ -43,14 +55,45 @@ std::filesystem::path AlignedOutput::framePath(int frameNumber) const
   return folder_ / "aligned" / frameFileName(frameNumber);
 }
 
-std::optional<Points> AlignedOutput::earlier(int frameNumber) const
+std::optional<FrameFit> AlignedOutput::earlier(int frameNumber) const
 {
   const std::filesystem::path path = framePath(frameNumber);
   if (!std::filesystem::exists(path)) return std::nullopt;
-  const TriangleMesh finished = readMeshFile(path.string());
-  if (finished.numVertices() != template_.numVertices() || !finished.V.allFinite())
+  vtkSmartPointer<vtkPolyData> mesh;
+  try
+  {
+    mesh = readVTPFile(path.string());
+  }
+  catch (const Error&)
+  {
+    return std::nullopt; // fitted again
+  }
+  const int n = template_.numVertices();
+  vtkDataArray* used = mesh->GetPointData()->GetArray("CorrespondenceUsed");
+  vtkDataArray* distance = mesh->GetPointData()->GetArray("SurfaceDistance");
+  auto* recovery =
+      vtkStringArray::SafeDownCast(mesh->GetFieldData()->GetAbstractArray("FitRecovery"));
+  vtkDataArray* attempts = mesh->GetFieldData()->GetArray("FitAttempts");
+  vtkDataArray* doubt = mesh->GetFieldData()->GetArray("FitDoubt");
+  if (mesh->GetNumberOfPoints() != n || !used || used->GetNumberOfTuples() != n || !distance ||
+      distance->GetNumberOfTuples() != n || !recovery || recovery->GetNumberOfValues() != 1 ||
+      !attempts || attempts->GetNumberOfTuples() != 1 || !doubt || doubt->GetNumberOfTuples() != 1)
     return std::nullopt;
-  return finished.V;
+  FrameFit fit;
+  fit.positions.resize(n, 3);
+  fit.used.resize(n);
+  fit.surfaceDistance.resize(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    mesh->GetPoint(i, fit.positions.row(i).data());
+    fit.used[i] = static_cast<unsigned char>(used->GetComponent(i, 0));
+    fit.surfaceDistance[i] = distance->GetComponent(i, 0);
+  }
+  fit.attempts = static_cast<int>(attempts->GetComponent(0, 0));
+  fit.doubt = doubt->GetComponent(0, 0);
+  fit.recovery = recovery->GetValue(0);
+  if (!fit.positions.allFinite()) return std::nullopt;
+  return fit;
 }
 
 void AlignedOutput::write(int frameNumber, const FrameFit& fit, const Eigen::VectorXd& errors) const
@@ -65,6 +108,12 @@ void AlignedOutput::write(int frameNumber, const FrameFit& fit, const Eigen::Vec
   for (int i = 0; i < n; ++i) used->SetValue(i, fit.used.empty() ? 0 : fit.used[i]);
   mesh->GetPointData()->AddArray(used);
   if (errors.size() > 0) addArray(mesh, "Error", errors);
+  addFieldValue(mesh, "FitAttempts", fit.attempts);
+  addFieldValue(mesh, "FitDoubt", fit.doubt);
+  vtkNew<vtkStringArray> recovery;
+  recovery->SetName("FitRecovery");
+  recovery->InsertNextValue(fit.recovery);
+  mesh->GetFieldData()->AddArray(recovery);
   writeCollectionFrame((folder_ / "aligned.pvd").string(), frameNumber, mesh, false);
 }
 

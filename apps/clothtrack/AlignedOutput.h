@@ -1,7 +1,8 @@
 #pragma once
 // The aligned sequence on disk: OUT/aligned.pvd and OUT/aligned/aligned_NNNN.vtp, each the
 // template's connectivity with the point arrays Displacement, SurfaceDistance,
-// CorrespondenceUsed and, with a ground truth, Error.
+// CorrespondenceUsed and, with a ground truth, Error, and the field data FitAttempts, FitDoubt
+// and FitRecovery (how the frame's fit was judged and retried).
 #include <clothtrack/fit/TemplateFit.h>
 
 #include <filesystem>
@@ -18,8 +19,9 @@ public:
 
   /// aligned/aligned_NNNN.vtp of the input's frame number.
   std::filesystem::path framePath(int frameNumber) const;
-  /// The positions of a frame written by an earlier run, when they fit this template.
-  std::optional<Points> earlier(int frameNumber) const;
+  /// The fit of a frame written by an earlier run (positions, correspondences used, surface
+  /// distances, attempts, doubt and recovery), when it is readable and fits this template.
+  std::optional<FrameFit> earlier(int frameNumber) const;
   /// Writes one frame (called from a writer thread: everything is passed by value).
   void write(int frameNumber, const FrameFit& fit, const Eigen::VectorXd& errors) const;
   /// aligned.pvd, listing the frames at their times.

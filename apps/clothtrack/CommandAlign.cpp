@@ -321,11 +321,16 @@ void runTemplateStage(Run& run)
                s.forcedTemplate >= 0 ? "" : run.templateDecidedBy.c_str());
 }
 
-fs::path targetPath(const Run& run, int k)
+std::string frameFileName(int frameNumber)
 {
   char name[32];
-  std::snprintf(name, sizeof(name), "frame_%04d.bin", run.input.frameNumber[k]);
-  return run.work / "correspondence" / name;
+  std::snprintf(name, sizeof(name), "frame_%04d.bin", frameNumber);
+  return name;
+}
+
+fs::path targetPath(const Run& run, int k)
+{
+  return run.work / "correspondence" / frameFileName(run.input.frameNumber[k]);
 }
 
 /// Correspondences depend on the landmarks, the template and the patch options; the aligned
@@ -355,6 +360,7 @@ void startKeys(Run& run)
                  "replaced\n",
                  run.settings.output.c_str());
   fs::remove_all(run.out / "aligned");
+  fs::remove_all(run.out / "fit_state");
   writeTextAtomically(path.string(), key.dump(2) + "\n");
 }
 
@@ -444,13 +450,38 @@ void runFitStage(Run& run, const AlignedOutput& output)
     hooks.start = bodyStartPrediction(run.posedByBody, std::move(hooks.start));
   if (s.retryDoubtful) judgeFits(hooks, run.templateMesh(), {}, run.posedByBody);
   hooks.resumed = [&](int k) { return output.earlier(in.frameNumber[k]); };
+  const fs::path stateFolder = run.out / "fit_state";
+  fs::create_directories(stateFolder);
+  auto statePath = [&](int k) { return (stateFolder / frameFileName(in.frameNumber[k])).string(); };
+  hooks.resumedState = [&](int k)
+  {
+    std::optional<TemplateFitterState> state =
+        readFitterState(statePath(k), run.templateMesh().numVertices());
+    if (!state)
+      std::fprintf(stderr,
+                   "warning: the solver state after frame %d (%s) was not kept: the frames fitted "
+                   "after it may differ from an uninterrupted run within the solver's tolerance\n",
+                   k, in.files[k].c_str());
+    return state;
+  };
   BackgroundWriter writer; // finishes before what its tasks refer to goes
+  // Frame k's solver state is on disk before its aligned frame, and the state before it is
+  // removed after: whichever frame a stopped run wrote last, the state that follows it is there.
+  hooks.fitterState = [&](int k, const TemplateFitterState& state)
+  { writer.submit([path = statePath(k), state]() { writeFitterState(path, state); }); };
   hooks.fitted = [&](int k, const FrameFit& fit)
   {
     errorsOf(k, fit.positions);
+    const int previous = k < j ? k + 1 : k - 1;
+    const std::string used = k != j && previous != j ? statePath(previous) : std::string();
     // The writer gets copies: the chain moves on to the next frame at once.
-    writer.submit([&output, number = in.frameNumber[k], fit, errors = run.errors[k]]()
-                  { output.write(number, fit, errors); });
+    writer.submit(
+        [&output, number = in.frameNumber[k], fit, errors = run.errors[k], used]()
+        {
+          output.write(number, fit, errors);
+          std::error_code ignored;
+          if (!used.empty()) fs::remove(used, ignored);
+        });
   };
   Progress progress("align", n);
   hooks.progress = [&](double done)
@@ -460,6 +491,7 @@ void runFitStage(Run& run, const AlignedOutput& output)
   };
   run.fits = fitTemplateSequence(run.templateMesh(), j, n, hooks, s.fit);
   writer.finish();
+  fs::remove_all(stateFolder); // every frame is written: no fit continues from these
   progress.finish();
   for (int k = 0; k < n; ++k)
     if (run.fits[k].resumed) errorsOf(k, run.fits[k].positions);
@@ -474,7 +506,7 @@ void addRetryMetrics(nlohmann::json& metrics, const std::vector<FrameFit>& fits)
   for (int k = 0; k < static_cast<int>(fits.size()); ++k)
   {
     const FrameFit& f = fits[k];
-    attempts.push_back(f.resumed ? 0 : f.attempts);
+    attempts.push_back(f.attempts);
     if (f.attempts > 1)
       retried.push_back({{"frame", k},
                          {"attempts", f.attempts},

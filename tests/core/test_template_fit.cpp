@@ -9,8 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 
 using namespace clothtrack;
 
@@ -401,4 +403,94 @@ TEST(TemplateFit, CholmodAndBlockFactorsGiveTheSameFit)
     EXPECT_LT(meanError(block[k].positions, cholmod[k].positions), 1e-4) << "frame " << k;
   }
   EXPECT_GT((block.back().positions - block.front().positions).cwiseAbs().maxCoeff(), 0.05);
+}
+
+TEST(TemplateFit, AResumedSequenceWithTheSolverStateIsBitForBitTheSame)
+{
+  // Frames that bend further and further from the first: each frame's conjugate gradients are
+  // preconditioned by factorisations of earlier frames, which a resumed run lacks.
+  const TriangleMesh t = limb();
+  const int count = 8, stoppedAfter = 3;
+  std::vector<TriangleMesh> frames;
+  std::vector<VertexTargets> targets;
+  for (int k = 0; k < count; ++k)
+  {
+    frames.push_back(moved(t, 0.12 * k, Vec3(0.02 * k, 0.0, 0.0)));
+    targets.push_back(everyNth(frames.back(), 5));
+  }
+  SequenceFitHooks hooks;
+  hooks.frame = [&](int k) -> const TriangleMesh& { return frames[k]; };
+  hooks.targets = [&](int k) -> const VertexTargets* { return &targets[k]; };
+  std::vector<TemplateFitterState> states(count);
+  hooks.fitterState = [&](int k, const TemplateFitterState& state) { states[k] = state; };
+  const std::vector<FrameFit> whole = fitTemplateSequence(frames[0], 0, count, hooks);
+  EXPECT_EQ(states[0].stages.size(), 0u); // the template frame is not fitted
+  ASSERT_EQ(states[stoppedAfter].stages.size(), 4u);
+  EXPECT_EQ(states[stoppedAfter].vertices, t.numVertices());
+
+  // Frames 0 to 3 taken from the first run, as after a stop.
+  auto resumed = [&](bool withState)
+  {
+    SequenceFitHooks again = hooks;
+    again.fitterState = nullptr;
+    again.resumed = [&](int k) -> std::optional<FrameFit>
+    {
+      if (k > stoppedAfter) return std::nullopt;
+      return whole[k];
+    };
+    if (withState)
+      again.resumedState = [&](int k) -> std::optional<TemplateFitterState>
+      {
+        EXPECT_EQ(k, stoppedAfter);
+        return states[k];
+      };
+    return fitTemplateSequence(frames[0], 0, count, again);
+  };
+  const std::vector<FrameFit> exact = resumed(true), fresh = resumed(false);
+  double freshDifference = 0;
+  for (int k = 0; k < count; ++k)
+  {
+    EXPECT_EQ(exact[k].resumed, k <= stoppedAfter) << "frame " << k;
+    EXPECT_EQ((exact[k].positions - whole[k].positions).cwiseAbs().maxCoeff(), 0.0)
+        << "frame " << k;
+    freshDifference =
+        std::max(freshDifference, (fresh[k].positions - whole[k].positions).cwiseAbs().maxCoeff());
+    // Without the state the fit is as good, only not the same to the last bit.
+    EXPECT_LT(meanError(fresh[k].positions, whole[k].positions), 1e-4) << "frame " << k;
+  }
+  EXPECT_GT(freshDifference, 0.0);
+}
+
+TEST(TemplateFit, RefusesASolverStateOfAnotherTemplate)
+{
+  const TriangleMesh t = limb();
+  TemplateFitter fitter(t);
+  const TriangleMesh frame = moved(t, 0.1, Vec3(0.01, 0.0, 0.0));
+  const VertexTargets targets = everyNth(frame, 5);
+  const FrameFit first = fitter.fit(t.V, frame, &targets);
+  TemplateFitterState state = fitter.state();
+  ASSERT_FALSE(state.stages.empty());
+  EXPECT_TRUE(state.stages[0].factored);
+
+  TemplateFitterState otherSize = state;
+  otherSize.vertices += 1;
+  EXPECT_THROW(fitter.restore(otherSize), Error);
+  TemplateFitterState notFinite = state;
+  notFinite.stages[0].blocks[3] = std::nan("");
+  EXPECT_THROW(fitter.restore(notFinite), Error);
+  TemplateFitterState shortened = state;
+  shortened.stages[1].blocks.resize(7);
+  EXPECT_THROW(fitter.restore(shortened), Error);
+  // A refused state leaves a fitter that starts afresh and still fits.
+  const FrameFit afterRefusal = fitter.fit(t.V, frame, &targets);
+  EXPECT_LT(meanError(afterRefusal.positions, first.positions), 1e-4);
+  EXPECT_GT(afterRefusal.factorisations, 0);
+  // A good state restores: the same start fits to the same bits as a fitter given that state.
+  fitter.restore(state);
+  TemplateFitter other(t);
+  other.restore(state);
+  EXPECT_EQ((fitter.fit(t.V, frame, &targets).positions - other.fit(t.V, frame, &targets).positions)
+                .cwiseAbs()
+                .maxCoeff(),
+            0.0);
 }

@@ -95,9 +95,9 @@ struct Chains
   bool resume(int k)
   {
     if (!hooks.resumed) return false;
-    std::optional<Points> earlier = hooks.resumed(k);
+    std::optional<FrameFit> earlier = hooks.resumed(k);
     if (!earlier) return false;
-    fits[k].positions = std::move(*earlier);
+    fits[k] = std::move(*earlier);
     fits[k].resumed = true;
     return true;
   }
@@ -116,7 +116,7 @@ struct Chains
   {
     try
     {
-      const TemplateFitter fitter(templateMesh, options);
+      TemplateFitter fitter(templateMesh, options);
       for (int k = from; k != to; k += direction)
       {
         Inputs in;
@@ -129,6 +129,9 @@ struct Chains
             continue;
           }
           const int previous = k - direction;
+          if (fits[previous].resumed && previous != from - direction && hooks.resumedState)
+            if (std::optional<TemplateFitterState> state = hooks.resumedState(previous))
+              fitter.restore(*state);
           in.frame = hooks.frame(k);
           if (hooks.targets)
             if (const VertexTargets* t = hooks.targets(k)) in.targets = *t;
@@ -146,6 +149,7 @@ struct Chains
           throw Error("Frame " + std::to_string(k) + ": " + e.what());
         }
         const std::lock_guard<std::mutex> lock(mutex);
+        if (hooks.fitterState) hooks.fitterState(k, fitter.state());
         fits[k] = std::move(fit);
         finish(k, true);
       }

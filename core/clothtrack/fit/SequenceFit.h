@@ -26,9 +26,17 @@ struct SequenceFitHooks
   std::function<const VertexTargets*(int k)> targets;
   /// The start of frame k; by default the neighbour's fit as it is.
   StartPrediction start;
-  /// Frame k's positions from an earlier run, which are kept instead of fitting the frame
-  /// (resuming an interrupted run); nullopt to fit it.
-  std::function<std::optional<Points>(int k)> resumed;
+  /// Frame k's fit from an earlier run (positions at least), which is kept instead of fitting
+  /// the frame (resuming an interrupted run); nullopt to fit it.
+  std::function<std::optional<FrameFit>(int k)> resumed;
+  /// The solver state the earlier run had after fitting frame k (see `fitterState`), asked for
+  /// the last resumed frame before a frame to fit. With it, the frames fitted after the resumed
+  /// ones come out exactly as in a run that was never interrupted; without it (nullopt) they
+  /// start from a fresh solver and differ within the solver's tolerance.
+  std::function<std::optional<TemplateFitterState>(int k)> resumedState;
+  /// Called with the solver state after each fitted frame (the template frame and resumed
+  /// frames excepted), before `fitted`: kept, it lets an interrupted run resume exactly.
+  std::function<void(int k, const TemplateFitterState& state)> fitterState;
   /// Called with each frame as soon as it is fitted, the template frame included (not for
   /// resumed frames): writing, evaluation.
   std::function<void(int k, const FrameFit& fit)> fitted;

@@ -76,6 +76,9 @@ struct TemplateFitter::Impl
   // fit() is therefore not reentrant.
   mutable std::vector<std::unique_ptr<PreconditionerFactor>> factors;
   mutable std::vector<unsigned char> stale; // per stage: renew the factor at its next round
+  // Per stage, the matrix each factor was made from (TemplateFitterState), so that another
+  // fitter can make the same factor.
+  mutable std::vector<TemplateFitterState::Stage> factored;
   mutable Unknowns scratch[4];
 
   FactorBackend backend = FactorBackend::Block;
@@ -117,21 +120,23 @@ struct TemplateFitter::Impl
                  bool mayRefactor = true) const
   {
     constexpr int kMaxSteps = 20; // conjugate-gradient steps before the factor is renewed
-    if (factors.size() <= stage) factors.resize(stage + 1), stale.resize(stage + 1, 0);
+    growStages(stage + 1);
     std::unique_ptr<PreconditionerFactor>& factor = factors[stage];
     auto refactor = [&]()
     {
       const auto start = std::chrono::steady_clock::now();
-      if (!factor) factor = makeFactor(backend, pattern);
-      try
+      TemplateFitterState::Stage& record = factored[stage];
+      record.factored = true;
+      record.edgeWeight = q.edgeWeight;
+      record.blocks.resize(10 * static_cast<size_t>(n));
+      for (int i = 0; i < n; ++i)
       {
-        factor->factorise(normalMatrix(q));
+        int k = 0;
+        for (int r = 0; r < 4; ++r)
+          for (int c = 0; c <= r; ++c)
+            record.blocks[10 * static_cast<size_t>(i) + k++] = q.diagonal[i](r, c);
       }
-      catch (const Error&)
-      {
-        factor.reset(); // the next round starts afresh
-        throw Error("Template fit: the normal equations are not positive definite.");
-      }
+      factorise(stage);
       ++stats.factorisations;
       stats.factorSeconds += seconds(start);
     };
@@ -152,19 +157,41 @@ struct TemplateFitter::Impl
     return step;
   }
 
-  /// H of `q` as a sparse matrix (lower triangle), for factorisation.
-  SparseMatrix normalMatrix(const Quadratic& q) const
+  void growStages(size_t count) const
+  {
+    if (factors.size() >= count) return;
+    factors.resize(count);
+    stale.resize(count, 0);
+    factored.resize(count);
+  }
+
+  /// Factorises the matrix recorded for `stage` (factored[stage]).
+  void factorise(size_t stage) const
+  {
+    std::unique_ptr<PreconditionerFactor>& factor = factors[stage];
+    if (!factor) factor = makeFactor(backend, pattern);
+    try
+    {
+      factor->factorise(normalMatrix(factored[stage]));
+    }
+    catch (const Error&)
+    {
+      factor.reset(); // the next round starts afresh
+      factored[stage] = {};
+      throw Error("Template fit: the normal equations are not positive definite.");
+    }
+  }
+
+  /// H (lower triangle) from its diagonal blocks and edge weight, for factorisation.
+  SparseMatrix normalMatrix(const TemplateFitterState::Stage& record) const
   {
     SparseMatrix H = pattern;
     double* values = H.valuePtr();
     for (size_t e = 0; e < edges.size(); ++e)
-      for (int r = 0; r < 4; ++r) values[edgeSlots[e][r]] = -q.edgeWeight;
+      for (int r = 0; r < 4; ++r) values[edgeSlots[e][r]] = -record.edgeWeight;
     for (int i = 0; i < n; ++i)
-    {
-      int k = 0;
-      for (int r = 0; r < 4; ++r)
-        for (int c = 0; c <= r; ++c) values[diagonalSlots[i][k++]] = q.diagonal[i](r, c);
-    }
+      for (int k = 0; k < 10; ++k)
+        values[diagonalSlots[i][k]] = record.blocks[10 * static_cast<size_t>(i) + k];
     return H;
   }
 
@@ -260,6 +287,53 @@ TemplateFitter::TemplateFitter(const TriangleMesh& templateMesh, const TemplateF
 }
 
 TemplateFitter::~TemplateFitter() = default;
+
+TemplateFitterState TemplateFitter::state() const
+{
+  const Impl& m = *impl_;
+  TemplateFitterState state;
+  state.vertices = m.n;
+  state.stages = m.factored;
+  for (size_t s = 0; s < state.stages.size(); ++s) state.stages[s].stale = m.stale[s] != 0;
+  return state;
+}
+
+void TemplateFitter::restore(const TemplateFitterState& state)
+{
+  Impl& m = *impl_;
+  m.factors.clear();
+  m.stale.clear();
+  m.factored.clear();
+  if (state.vertices != m.n)
+    throw Error("Template fit: the solver state was made for " + std::to_string(state.vertices) +
+                " template vertices, this template has " + std::to_string(m.n) + ".");
+  m.growStages(state.stages.size());
+  for (size_t s = 0; s < state.stages.size(); ++s)
+  {
+    const TemplateFitterState::Stage& stage = state.stages[s];
+    if (!stage.factored) continue;
+    const bool finite =
+        std::isfinite(stage.edgeWeight) && std::all_of(stage.blocks.begin(), stage.blocks.end(),
+                                                       [](double x) { return std::isfinite(x); });
+    if (stage.blocks.size() != 10 * static_cast<size_t>(m.n) || !finite)
+    {
+      m.factored.clear(), m.factors.clear(), m.stale.clear();
+      throw Error("Template fit: the solver state of stage " + std::to_string(s + 1) +
+                  " is not a matrix of this template.");
+    }
+    m.factored[s] = stage;
+    m.stale[s] = stage.stale;
+    try
+    {
+      m.factorise(s);
+    }
+    catch (const Error&)
+    {
+      m.factored.clear(), m.factors.clear(), m.stale.clear();
+      throw;
+    }
+  }
+}
 
 FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
                              const VertexTargets* targets) const

@@ -122,6 +122,26 @@ struct FrameFit
   std::string recovery; ///< empty, or the other start whose fit was kept instead of the first
 };
 
+/// What a TemplateFitter carries from one frame to the next (TemplateFitOptions::refactorSteps):
+/// per stage, the normal matrix its preconditioner factorised and whether that factorisation is
+/// due for renewal. The preconditioner changes the last bits of every later fit, so a fitter that
+/// takes over the state another had after frame k fits the next frames exactly as that one
+/// would: an interrupted sequence fit resumes to the same result.
+struct TemplateFitterState
+{
+  struct Stage
+  {
+    bool factored = false; ///< the stage has a factorisation (false: none made yet)
+    bool stale = false;    ///< it is renewed at the stage's next round
+    /// The factorised matrix: every edge's off-diagonal block is -edgeWeight I, and each
+    /// vertex's diagonal block is given by its lower triangle, 10 values row by row.
+    double edgeWeight = 0.0;
+    std::vector<double> blocks;
+  };
+  int vertices = 0;
+  std::vector<Stage> stages;
+};
+
 /// Deforms one template connectivity onto frames. The symbolic factorisation is shared by all
 /// frames; fit() itself is sequential and uses parallel loops inside.
 class TemplateFitter
@@ -138,6 +158,13 @@ public:
   FrameFit fit(const Points& start, const TriangleMesh& frame, const VertexTargets* targets) const;
 
   const TemplateFitOptions& options() const { return options_; }
+
+  /// The state the next fit starts from (see TemplateFitterState).
+  TemplateFitterState state() const;
+  /// Takes over `state`, factorising its matrices again. Throws Error when it was made for
+  /// another vertex count or holds non-finite or non-positive-definite matrices; the fitter is
+  /// then left without factorisations.
+  void restore(const TemplateFitterState& state);
 
 private:
   struct Impl;
