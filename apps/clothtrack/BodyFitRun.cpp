@@ -105,4 +105,29 @@ void warnAboutDiscontinuities(const BodyFitResult& body, double limit)
                "(body_fit.json: previous_gap_m)\n",
                frames.size(), body.frames.size(), 100.0 * limit, list.c_str());
 }
+
+void warnAboutPoorFits(const BodyFitResult& body, const std::vector<std::string>& files)
+{
+  const int shown = 10;
+  int poor = 0;
+  for (size_t k = 0; k < body.frames.size(); ++k)
+  {
+    const BodyFrameFit& fit = body.frames[k];
+    if (fit.status == BodyFitStatus::Ok) continue;
+    if (++poor <= shown)
+      std::fprintf(stderr,
+                   "warning: %s: the body model does not fit this frame (%s): is it a person, "
+                   "in the sequence's unit and up axis? Its landmarks and correspondences are "
+                   "doubtful; check it, or leave it out (--frames)\n",
+                   files[k].c_str(), fit.message.empty() ? "poor" : fit.message.c_str());
+  }
+  if (poor > shown)
+    std::fprintf(stderr, "warning: %d more frames the body model does not fit (body_fit.json)\n",
+                 poor - shown);
+  if (2 * poor > static_cast<int>(body.frames.size()))
+    std::fprintf(stderr,
+                 "warning: the body model fits %d of %zu frames poorly: check --unit and --up "
+                 "(or 'auto'), and that the frames show one person\n",
+                 poor, body.frames.size());
+}
 } // namespace clothtrack::app

@@ -28,4 +28,8 @@ BodyFrameFit bodyFrameFit(const nlohmann::json& record);
 /// Warns when frames do not continue the frame before them (BodyFitOptions::neighbourGap, in
 /// metres as `limit`): a cut, a gap in the capture, or a collection of unrelated poses.
 void warnAboutDiscontinuities(const BodyFitResult& body, double limit);
+/// Warns about each frame the body model does not fit (status poor or failed), naming its file
+/// and why: a frame that is not a person, or a person the model cannot follow there. Its
+/// landmarks, and so its correspondences, are doubtful.
+void warnAboutPoorFits(const BodyFitResult& body, const std::vector<std::string>& files);
 } // namespace clothtrack::app

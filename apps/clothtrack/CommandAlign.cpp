@@ -21,6 +21,7 @@
 #include <clothtrack/fit/MotionPrediction.h>
 #include <clothtrack/fit/SequenceFit.h>
 #include <clothtrack/io/FrameList.h>
+#include <clothtrack/mesh/FrameConsistency.h>
 #include <clothtrack/mesh/SubjectSize.h>
 #include <clothtrack/pipeline/BodyStage.h>
 #include <clothtrack/pipeline/BodyStartPrediction.h>
@@ -110,6 +111,7 @@ struct Input
   std::vector<int> frameNumber; ///< index in the full input list
   std::vector<TriangleMesh> frames, truth;
   std::optional<MarkerTrajectories> markers;
+  std::vector<FrameJump> jumps; ///< frames whose size or place breaks with the others (warned)
   int count() const { return static_cast<int>(frames.size()); }
   std::vector<const TriangleMesh*> pointers() const
   {
@@ -156,6 +158,51 @@ void removeLeftoverParts(const std::vector<fs::path>& folders)
   }
   if (removed > 0)
     std::fprintf(stderr, "removed %d partial files left by an interrupted run\n", removed);
+}
+
+/// Refuses a frame whose size says it is in another unit (leaves it out with --skip-bad-frames)
+/// and warns about frames whose size or place jumps otherwise.
+void checkFrameJumps(Input& in, bool skipBadFrames)
+{
+  in.jumps = frameJumps(in.pointers());
+  std::vector<FrameJump> kept;
+  for (auto jump = in.jumps.rbegin(); jump != in.jumps.rend(); ++jump)
+  {
+    const int k = jump->frame;
+    const std::string line = in.files[k] + ": " + jump->problem;
+    if (!jump->refused)
+    {
+      kept.insert(kept.begin(), *jump);
+      continue;
+    }
+    if (!skipBadFrames)
+      throw UsageError{line + ": convert it, or leave it out with --skip-bad-frames"};
+    std::fprintf(stderr, "warning: %s (frame left out)\n", line.c_str());
+    in.frames.erase(in.frames.begin() + k);
+    in.files.erase(in.files.begin() + k);
+    in.frameNumber.erase(in.frameNumber.begin() + k);
+    if (!in.truthFiles.empty()) in.truthFiles.erase(in.truthFiles.begin() + k);
+    for (FrameJump& later : kept) --later.frame;
+  }
+  in.jumps = kept;
+  for (const FrameJump& jump : in.jumps)
+    std::fprintf(stderr, "warning: %s: %s\n", in.files[jump.frame].c_str(), jump.problem.c_str());
+}
+
+/// Refuses a ground truth of another scale than the input; warns once when it lies elsewhere.
+void checkGroundTruth(const Input& in)
+{
+  bool warned = false;
+  for (int k = 0; k < static_cast<int>(in.truth.size()); ++k)
+  {
+    bool refused = false;
+    const std::string problem = groundTruthMismatch(in.frames[k], in.truth[k], refused);
+    if (refused) throw UsageError{in.truthFiles[k] + ": " + problem + " (" + in.files[k] + ")"};
+    if (!problem.empty() && !warned)
+      std::fprintf(stderr, "warning: %s: %s (%s)\n", in.truthFiles[k].c_str(), problem.c_str(),
+                   in.files[k].c_str());
+    warned = warned || !problem.empty();
+  }
 }
 
 /// Says so when frames are missing from a numbered sequence: the motion jumps there. Files listed
@@ -210,10 +257,12 @@ Input readInput(const AlignSettings& s)
   }
   progress.finish();
   warnAboutGaps(in.files);
+  checkFrameJumps(in, s.skipBadFrames);
   if (in.count() < 2) throw UsageError{s.input + ": at least two readable frames are needed"};
   for (const std::string& w : subjectWarnings(in.frames.front()))
     std::fprintf(stderr, "warning: %s: %s\n", in.files.front().c_str(), w.c_str());
   in.truth = loadGroundTruth(in.truthFiles, conventions);
+  checkGroundTruth(in);
   // Markers are read now, so that a bad file stops the run before the long stages.
   if (!s.markersPath.empty()) in.markers = selectedMarkers(s.markersPath, in.frameNumber);
   return in;
@@ -290,6 +339,7 @@ void runBodyStage(Run& run)
   writeTextAtomically((run.out / "body_fit.json").string(),
                       bodyFitJson(s.modelPath, run.input.files, run.body).dump(1) + "\n");
   warnAboutDiscontinuities(run.body.body, options.fit.neighbourGap);
+  warnAboutPoorFits(run.body.body, run.input.files);
   for (int k = 0; k < n; ++k)
     if (run.body.landmarks[k].empty())
       std::fprintf(stderr,
@@ -572,6 +622,14 @@ nlohmann::json evaluate(const Run& run)
   for (const FrameFit& f : run.fits) resumed += f.resumed;
   metrics["resumed_frames"] = resumed;
   metrics["reused_correspondence_frames"] = run.reusedCorrespondences;
+  nlohmann::json jumps = nlohmann::json::array();
+  for (const FrameJump& jump : in.jumps)
+    jumps.push_back({{"frame", jump.frame},
+                     {"file", in.files[jump.frame]},
+                     {"size_ratio", jump.sizeRatio},
+                     {"shift_m", jump.shift},
+                     {"problem", jump.problem}});
+  metrics["jumping_frames"] = jumps;
   metrics["threads"] = threadCount();
   metrics["solver"] = s.solver;
   metrics["predict_radius_m"] = s.prediction.predictRadius;

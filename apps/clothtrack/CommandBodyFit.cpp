@@ -221,6 +221,7 @@ int runBodyFit(const Args& args)
   const BodyFitResult& result = stage.body;
   const double fitSeconds = secondsSince(fitStart);
   warnAboutDiscontinuities(result, s.stage.fit.neighbourGap);
+  warnAboutPoorFits(result, files);
 
   fs::create_directories(s.output);
   const BodyFitTotals totals = writeFrames(s, model, files, frames, stage);
