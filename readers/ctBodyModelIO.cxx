@@ -10,7 +10,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
-#include <vtkXMLPolyDataReader.h>
 
 #include <filesystem>
 
@@ -198,12 +197,17 @@ BodyModel readBodyModel(const std::string& path)
 {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw Error(path + ": no such body model file");
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  if (reader->GetErrorCode() != 0 || !reader->GetOutput() ||
-      reader->GetOutput()->GetNumberOfPoints() == 0)
-    throw Error(path + ": cannot read body model (not a VTP file?)");
-  return bodyModelFromPolyData(reader->GetOutput(), path);
+  vtkSmartPointer<vtkPolyData> data;
+  try
+  {
+    data = readVTPFile(path);
+  }
+  catch (const Error& e)
+  {
+    throw Error(std::string(e.what()) + " (a body model is a VTP file)");
+  }
+  if (data->GetNumberOfPoints() == 0)
+    throw Error(path + ": cannot read body model (no point in the file)");
+  return bodyModelFromPolyData(data, path);
 }
 } // namespace clothtrack

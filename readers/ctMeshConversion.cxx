@@ -1,4 +1,6 @@
 #include "ctMeshConversion.h"
+
+#include "ctGuardedPolyDataReader.h"
 #include "ctVtkMessageCapture.h"
 
 #include <clothtrack/base/Error.h>
@@ -17,7 +19,6 @@
 #include <vtkPolyDataWriter.h>
 #include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
-#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
@@ -188,7 +189,7 @@ TriangleMesh readMeshFileUnguarded(const std::string& path)
   else if (ext == ".vtp")
   {
     checkVTKXMLFile(path);
-    data = readWithVtk<vtkXMLPolyDataReader>(path);
+    data = readWithVtk<ctGuardedPolyDataReader>(path);
   }
   else if (ext == ".vtk") // VTK's legacy reader trusts the declared counts and the version line
     return readLegacyVTK(path);
@@ -203,7 +204,7 @@ vtkSmartPointer<vtkPolyData> readVTPFile(const std::string& path)
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw Error(path + ": no such file");
   checkVTKXMLFile(path);
-  return readWithVtk<vtkXMLPolyDataReader>(path);
+  return readWithVtk<ctGuardedPolyDataReader>(path);
 }
 
 TriangleMesh readMeshFile(const std::string& path)

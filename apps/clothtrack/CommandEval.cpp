@@ -17,7 +17,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkXMLPolyDataReader.h>
 
 #include <nlohmann/json.hpp>
 
@@ -48,15 +47,18 @@ nlohmann::json readMetrics(const fs::path& path)
 vtkSmartPointer<vtkPolyData> readAligned(const fs::path& path)
 {
   if (!fs::exists(path)) throw UsageError{path.string() + ": aligned frame missing"};
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkPolyData* data = reader->GetOutput();
-  if (!data || data->GetNumberOfPoints() == 0)
+  vtkSmartPointer<vtkPolyData> data;
+  try
+  {
+    data = readVTPFile(path.string());
+  }
+  catch (const Error& e)
+  {
+    throw UsageError{e.what()};
+  }
+  if (data->GetNumberOfPoints() == 0)
     throw UsageError{path.string() + ": unreadable or empty aligned frame"};
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->DeepCopy(data);
-  return copy;
+  return data;
 }
 /// Each aligned frame's vertex errors against the ground truth: the Error array of
 /// aligned.pvd's frames and the error figures of metrics.json.

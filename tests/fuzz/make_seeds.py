@@ -5,6 +5,7 @@ import base64
 import os
 import struct
 import sys
+import zlib
 
 # A tetrahedron and a two-triangle square with a quad: enough structure for the fuzzer to mutate.
 POINTS = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
@@ -96,6 +97,27 @@ def vtp(out):
         return base64.b64encode(struct.pack("<Q", len(raw)) + raw).decode()
 
     write(out, "binary.vtp", piece(b64("f", coords), b64("q", conn), b64("q", offs), "binary"))
+
+    # As ClothTrack writes its output (the writer's default layout): raw appended data in
+    # compressed blocks, each array a header (blocks, block size, last block size, compressed
+    # sizes) and its zlib blocks.
+    def compressed(fmt, values):
+        raw = struct.pack("<%d%s" % (len(values), fmt), *values)
+        block = zlib.compress(raw)
+        return struct.pack("<4Q", 1, len(raw), len(raw), len(block)) + block
+
+    arrays = [compressed("f", coords), compressed("q", conn), compressed("q", offs)]
+    starts = [sum(len(a) for a in arrays[:k]) for k in range(3)]
+    header = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" '
+              'byte_order="LittleEndian" header_type="UInt64" compressor="vtkZLibDataCompressor">\n'
+              '<PolyData>\n<Piece NumberOfPoints="4" NumberOfVerts="0" NumberOfLines="0" '
+              'NumberOfStrips="0" NumberOfPolys="4">\n<Points><DataArray type="Float32" '
+              'NumberOfComponents="3" format="appended" offset="%d"/></Points>\n<Polys>'
+              '<DataArray type="Int64" Name="connectivity" format="appended" offset="%d"/>'
+              '<DataArray type="Int64" Name="offsets" format="appended" offset="%d"/></Polys>\n'
+              '</Piece>\n</PolyData>\n<AppendedData encoding="raw">\n_' % tuple(starts))
+    write(out, "appended_zlib.vtp",
+          header.encode() + b"".join(arrays) + b"\n</AppendedData>\n</VTKFile>\n")
 
 
 def main():

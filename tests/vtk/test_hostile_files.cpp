@@ -190,6 +190,30 @@ TEST(HostileFiles, DeclaredSizesAreCheckedBeforeAllocating)
   }
   // A truncated XML file: the parser's own message, as one line.
   expectError(writeText(dir + "/truncated.vtp", xml.substr(0, xml.size() / 2)), "XML");
+  const std::string polys = "NumberOfPolys=\"192\"";
+  ASSERT_NE(xml.find(polys), std::string::npos);
+  std::string manyPolys = xml;
+  manyPolys.replace(manyPolys.find(polys), polys.size(), "NumberOfPolys=\"900000000000\"");
+  expectError(writeText(dir + "/polys.vtp", manyPolys), "NumberOfPolys is 900000000000");
+
+  // VTK sizes the connectivity by the last offset before reading it: one far past the
+  // connectivity asked for gigabytes.
+  writer->SetDataModeToAscii();
+  const std::string ascii = dir + "/ascii.vtp";
+  writer->SetFileName(ascii.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  EXPECT_EQ(readMeshFile(ascii).numFaces(), 192);
+  std::ifstream asciiIn(ascii);
+  std::string text((std::istreambuf_iterator<char>(asciiIn)), std::istreambuf_iterator<char>());
+  const size_t offsets = text.rfind("Name=\"offsets\""); // the polygons', after the others
+  ASSERT_NE(offsets, std::string::npos);
+  // Its values (past the element's attributes) end with 3 x 192, the connectivity's length.
+  const size_t last = text.find("576", text.find('>', offsets));
+  ASSERT_NE(last, std::string::npos);
+  text.replace(last, 3, "2147483660");
+  expectError(writeText(dir + "/offsets.vtp", text),
+              "Polys: the offsets ask for 2147483660 connectivity values, more than the "
+              "connectivity array holds");
 }
 
 TEST(HostileFiles, TextQuirksReadAsMeant)

@@ -8,8 +8,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 namespace clothtrack
 {
@@ -78,12 +76,15 @@ void checkVTKXMLFile(const std::string& path)
       throw Error(path + ": " + name + " is '" +
                   std::string(start, std::strcspn(start, "\"")).substr(0, 30) +
                   "', not a count (corrupt file)");
-    // 3 coordinates of at least 4 bytes each; no compressor of VTK's shrinks data more than
-    // about a thousand times.
-    if (name == "NumberOfPoints" && static_cast<double>(value) * 12.0 / 1100.0 > data.size())
-      throw Error(path + ": NumberOfPoints is " + std::to_string(value) +
-                  ", more than the file's " + std::to_string(data.size()) +
-                  " bytes can hold (corrupt file)");
+    // A point is 3 coordinates of at least 4 bytes, a cell at least one offset of 1 byte; no
+    // compressor of VTK's shrinks data more than about a thousand times.
+    const bool cells = name == "NumberOfVerts" || name == "NumberOfLines" ||
+                       name == "NumberOfStrips" || name == "NumberOfPolys" ||
+                       name == "NumberOfCells";
+    const double bytesPer = name == "NumberOfPoints" ? 12.0 : cells ? 1.0 : 0.0;
+    if (static_cast<double>(value) * bytesPer / 1100.0 > data.size())
+      throw Error(path + ": " + name + " is " + std::to_string(value) + ", more than the file's " +
+                  std::to_string(data.size()) + " bytes can hold (corrupt file)");
   }
 }
 } // namespace clothtrack
