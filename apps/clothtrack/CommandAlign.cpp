@@ -138,6 +138,7 @@ struct Run
   std::vector<Eigen::VectorXd> errors;
   int verticesWithTruth = 0;
   int reusedCorrespondences = 0; ///< frames whose correspondences an earlier run left
+  int reusedLandmarks = 0;       ///< frames whose body fit and landmarks an earlier run left
   const TriangleMesh& templateMesh() const { return input.frames[templateFrame]; }
 };
 
@@ -317,6 +318,7 @@ void runBodyStage(Run& run)
       static_cast<int>(cached->body.frames.size()) == n)
   {
     run.body = std::move(*cached);
+    run.reusedLandmarks = n;
     std::fprintf(stderr, "body fit: landmarks of %d frames reused from %s\n", n, cache.c_str());
   }
   else
@@ -622,6 +624,7 @@ nlohmann::json evaluate(const Run& run)
   for (const FrameFit& f : run.fits) resumed += f.resumed;
   metrics["resumed_frames"] = resumed;
   metrics["reused_correspondence_frames"] = run.reusedCorrespondences;
+  metrics["reused_landmark_frames"] = run.reusedLandmarks;
   nlohmann::json jumps = nlohmann::json::array();
   for (const FrameJump& jump : in.jumps)
     jumps.push_back({{"frame", jump.frame},

@@ -14,7 +14,8 @@ import sys
 import time
 
 RUN_DESCRIBING = ("seconds_total", "seconds_per_frame", "seconds_per_fitted_frame",
-                  "stage_seconds", "peak_rss_mb", "resumed_frames", "reused_correspondence_frames")
+                  "stage_seconds", "peak_rss_mb", "resumed_frames", "reused_correspondence_frames",
+                  "reused_landmark_frames")
 
 
 def align(app, synth, out):
@@ -90,8 +91,9 @@ def main():
                        if key not in RUN_DESCRIBING and metrics.get(key) != again.get(key))
     if differing:
         sys.exit("metrics differ from the uninterrupted run's: " + ", ".join(differing))
-    if again["resumed_frames"] < 2:
-        sys.exit(f"the last run resumed {again['resumed_frames']} frames (expected at least 2)")
+    if again["resumed_frames"] < 2 or again["reused_landmark_frames"] != 6:
+        sys.exit(f"the last run resumed {again['resumed_frames']} frames (expected at least 2) "
+                 f"and reused the landmarks of {again['reused_landmark_frames']} (expected 6)")
     leftovers = [f for _, _, files in os.walk(resumed) for f in files if f.endswith(".part")]
     if leftovers or os.path.exists(os.path.join(resumed, "fit_state")):
         sys.exit(f"left behind: {leftovers or 'fit_state'}")
