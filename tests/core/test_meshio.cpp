@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 
@@ -165,4 +166,48 @@ TEST(MeshIO, PlyBinaryBothEndiannesses)
                                   "property list uchar int vertex_indices\nend_header\n"
                                   "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n");
   expectError([&] { readPLY(badIndex); }, badIndex, "out of range");
+}
+
+TEST(MeshIO, NumbersReadInPlaceAsStrtodReadsThem)
+{
+  // Plain lines are read in place with std::from_chars; anything else takes the general path.
+  // Both must agree: signs, exponents, hexadecimal, denormals, tabs, CRLF, v/vt/vn indices and
+  // trailing values.
+  const std::string dir = scratchDir("meshio-numbers");
+  const TriangleMesh obj = readOBJ(writeText(dir + "/n.obj", "v +1.5 -0.25e1\t3 0.5 0.5 0.5\r\n"
+                                                             "v 0x1p-1 1e-320 .5\n"
+                                                             "v 7. -0 1E+2 # note\n"
+                                                             "f +1 2/5/6 -1//2\n"
+                                                             "f\t1 2 3 \r\n"));
+  ASSERT_EQ(obj.numVertices(), 3);
+  EXPECT_EQ(obj.V(0, 0), 1.5);
+  EXPECT_EQ(obj.V(0, 1), -2.5);
+  EXPECT_EQ(obj.V(0, 2), 3.0);
+  EXPECT_EQ(obj.V(1, 0), 0.5);
+  EXPECT_EQ(obj.V(1, 1), std::strtod("1e-320", nullptr));
+  EXPECT_EQ(obj.V(1, 2), 0.5);
+  EXPECT_EQ(obj.V(2, 0), 7.0);
+  EXPECT_EQ(obj.V(2, 2), 100.0);
+  EXPECT_EQ(std::strtod("0.1", nullptr), 0.1); // the reference rounding
+  ASSERT_EQ(obj.numFaces(), 2);
+  EXPECT_EQ(obj.F.row(0), Eigen::RowVector3i(0, 1, 2));
+  EXPECT_EQ(obj.F.row(1), Eigen::RowVector3i(0, 1, 2));
+  // What the general path refuses is refused wherever it is.
+  EXPECT_THROW(readOBJ(writeText(dir + "/comment.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 #\n")),
+               Error);
+  EXPECT_THROW(readOBJ(writeText(dir + "/huge.obj", "v 1e400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")),
+               Error);
+  EXPECT_THROW(readOBJ(writeText(dir + "/glued.obj", "v 1 2 3x\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")),
+               Error);
+  // The same coordinates through OFF and ASCII PLY.
+  const TriangleMesh off = readOFF(writeText(
+      dir + "/n.off", "OFF\n3 1 0\n+1.5 -0.25e1 3\n0x1p-1 1e-320 .5\n7. -0 1E+2\n3 0 1 2\n"));
+  const TriangleMesh ply = readPLY(
+      writeText(dir + "/n.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                                "property double y\nproperty double z\nelement face 1\n"
+                                "property list uchar int vertex_indices\nend_header\n"
+                                "+1.5 -0.25e1 3\n0x1p-1 1e-320 .5\n7. -0 1E+2\n3 +0 1 2\n"));
+  EXPECT_EQ(off.V, obj.V);
+  EXPECT_EQ(ply.V, obj.V);
+  EXPECT_EQ(ply.F.row(0), Eigen::RowVector3i(0, 1, 2));
 }

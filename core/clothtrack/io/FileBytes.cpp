@@ -3,20 +3,30 @@
 #include <clothtrack/base/Error.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
+#include <memory>
 
 namespace clothtrack
 {
 std::string readFileBytes(const std::string& path, bool text)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw Error(path + ": read error");
-  std::string bytes = buffer.str();
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
+  std::string bytes;
+  // One read of the size the file has; a file that is not seekable (a pipe) or that grows while
+  // read is taken in chunks to its end.
+  long size = -1;
+  if (std::fseek(file.get(), 0, SEEK_END) == 0) size = std::ftell(file.get());
+  std::rewind(file.get());
+  if (size > 0) bytes.resize(static_cast<size_t>(size));
+  size_t used = bytes.size() > 0 ? std::fread(bytes.data(), 1, bytes.size(), file.get()) : 0;
+  bytes.resize(used);
+  char chunk[65536];
+  for (size_t got; (got = std::fread(chunk, 1, sizeof(chunk), file.get())) > 0;)
+    bytes.append(chunk, got);
+  if (std::ferror(file.get())) throw Error(path + ": read error");
   if (text && bytes.compare(0, 3, "\xEF\xBB\xBF") == 0) bytes.erase(0, 3);
   return bytes;
 }

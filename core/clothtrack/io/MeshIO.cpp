@@ -4,12 +4,13 @@
 #include <clothtrack/base/Error.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace clothtrack
@@ -26,8 +27,9 @@ bool isSpace(char c)
   return c == ' ' || c == '\t' || c == '\r';
 }
 
-// Splits one line into whitespace-separated tokens (views into the line).
-void tokenize(const char* begin, const char* end, std::vector<std::string>& tokens)
+// Splits one line into whitespace-separated tokens, views into the line: no allocation once the
+// vector has grown to the longest line.
+void tokenize(const char* begin, const char* end, std::vector<std::string_view>& tokens)
 {
   tokens.clear();
   const char* p = begin;
@@ -36,12 +38,14 @@ void tokenize(const char* begin, const char* end, std::vector<std::string>& toke
     while (p < end && isSpace(*p)) ++p;
     const char* start = p;
     while (p < end && !isSpace(*p)) ++p;
-    if (p > start) tokens.emplace_back(start, p);
+    if (p > start) tokens.emplace_back(start, static_cast<size_t>(p - start));
   }
 }
 
-bool parseDouble(const std::string& s, double& value)
+/// strtod's reading of the whole token: the reference for what a coordinate is.
+bool parseDoubleSlowly(std::string_view token, double& value)
 {
+  const std::string s(token);
   char* endp = nullptr;
   errno = 0;
   value = std::strtod(s.c_str(), &endp);
@@ -50,12 +54,64 @@ bool parseDouble(const std::string& s, double& value)
   return endp != s.c_str() && *endp == '\0' && !overflow;
 }
 
-bool parseInt(const std::string& s, long& value)
+bool parseDouble(std::string_view token, double& value)
 {
-  char* endp = nullptr;
-  errno = 0;
-  value = std::strtol(s.c_str(), &endp, 10);
-  return endp != s.c_str() && (*endp == '\0' || *endp == '/') && errno != ERANGE;
+  // std::from_chars is several times faster than strtod and rounds the same; what it does not
+  // take whole (a '+' sign, hexadecimal, out of range) goes to strtod, so both accept the same.
+  const char* begin = token.data();
+  const char* end = begin + token.size();
+  const auto [stop, error] = std::from_chars(begin, end, value);
+  if (error == std::errc() && stop == end) return true;
+  return parseDoubleSlowly(token, value);
+}
+
+/// A face index: an integer, alone or followed by '/' (OBJ's v/vt/vn).
+bool parseInt(std::string_view token, long& value)
+{
+  const char* begin = token.data();
+  const char* end = begin + token.size();
+  if (begin != end && *begin == '+' && end - begin > 1 && begin[1] != '-') ++begin;
+  const auto [stop, error] = std::from_chars(begin, end, value);
+  return error == std::errc() && stop != begin && (stop == end || *stop == '/');
+}
+
+void skipSpaces(const char*& p, const char* end)
+{
+  while (p < end && isSpace(*p)) ++p;
+}
+
+/// The common OBJ vertex line, "x y z" after the "v", read in place. False when it is anything
+/// else: the general path then reads it, or says what is wrong with it.
+bool readVertexQuickly(const char* p, const char* eol, double xyz[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    skipSpaces(p, eol);
+    const auto [stop, error] = std::from_chars(p, eol, xyz[k]);
+    if (error != std::errc() || stop == p || (stop < eol && !isSpace(*stop))) return false;
+    p = stop;
+  }
+  return true;
+}
+
+/// The common OBJ face line, indices "i", "i/t", "i//n" or "i/t/n" after the "f", read in place
+/// into `indices`. False when it is anything else (the general path decides).
+bool readFaceQuickly(const char* p, const char* eol, std::vector<long>& indices)
+{
+  indices.clear();
+  for (skipSpaces(p, eol); p < eol; skipSpaces(p, eol))
+  {
+    long index = 0;
+    const auto [stop, error] = std::from_chars(p, eol, index);
+    if (error != std::errc() || stop == p) return false;
+    p = stop;
+    if (p < eol && *p == '/')
+      while (p < eol && !isSpace(*p)) ++p;
+    else if (p < eol && !isSpace(*p))
+      return false;
+    indices.push_back(index);
+  }
+  return indices.size() >= 3;
 }
 
 void addFan(const std::vector<int>& polygon, std::vector<int>& faces)
@@ -87,7 +143,7 @@ TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
     throw Error(path + ": not a text OBJ file (contains NUL bytes)");
   std::vector<double> coords;
   std::vector<int> faces;
-  std::vector<std::string> tokens;
+  std::vector<std::string_view> tokens;
   std::vector<int> polygon;
   // Faces are resolved after reading so that indices may refer to vertices defined later.
   std::vector<long> rawFaces;
@@ -96,13 +152,42 @@ TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
   bool inGroup = onlyGroup.empty();
   const char* p = text.data();
   const char* end = p + text.size();
+  std::vector<long> quickFace;
+  {
+    // A line is a vertex or a face, mostly: room for one of each per line saves the regrowing.
+    size_t lines = 1;
+    for (const char* q = p; (q = static_cast<const char*>(std::memchr(q, '\n', end - q))); ++q)
+      ++lines;
+    coords.reserve(3 * lines);
+    rawFaces.reserve(3 * lines);
+  }
   while (p < end)
   {
     const char* eol = static_cast<const char*>(std::memchr(p, '\n', end - p));
     if (!eol) eol = end;
     ++lineNo;
-    tokenize(p, eol, tokens);
+    const char* line = p;
     p = eol + 1;
+    skipSpaces(line, eol);
+    // Most lines are plain vertices and faces: read in place, without tokens.
+    if (eol - line > 1 && isSpace(line[1]))
+    {
+      double xyz[3];
+      if (line[0] == 'v' && readVertexQuickly(line + 1, eol, xyz))
+      {
+        coords.insert(coords.end(), xyz, xyz + 3);
+        continue;
+      }
+      if (line[0] == 'f' && inGroup && readFaceQuickly(line + 1, eol, quickFace))
+      {
+        faceSize.push_back(static_cast<int>(quickFace.size()));
+        faceLine.push_back(lineNo);
+        faceVertexCount.push_back(static_cast<int>(coords.size() / 3));
+        rawFaces.insert(rawFaces.end(), quickFace.begin(), quickFace.end());
+        continue;
+      }
+    }
+    tokenize(line, eol, tokens);
     if (tokens.empty() || tokens[0][0] == '#') continue;
     if (tokens[0] == "v")
     {
@@ -126,7 +211,8 @@ TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
       {
         long idx;
         if (!parseInt(tokens[k], idx))
-          throw Error(where(path, lineNo) + "malformed face index '" + tokens[k] + "'");
+          throw Error(where(path, lineNo) + "malformed face index '" + std::string(tokens[k]) +
+                      "'");
         rawFaces.push_back(idx);
       }
     }
@@ -155,38 +241,45 @@ TriangleMesh readOFF(const std::string& path)
 {
   const std::string text = readFileBytes(path);
   if (text.empty()) throw Error(path + ": empty file");
-  // Token stream without comments, remembering line numbers for messages.
-  std::vector<std::pair<std::string, int>> tokens;
+  // Token stream without comments, remembering line numbers for messages (views into `text`).
+  struct Token
   {
-    std::istringstream in(text);
-    std::string line;
+    std::string_view text;
+    int line;
+  };
+  std::vector<Token> tokens;
+  {
+    std::vector<std::string_view> parts;
     int lineNo = 0;
-    std::vector<std::string> parts;
-    while (std::getline(in, line))
+    const char* p = text.data();
+    const char* end = p + text.size();
+    while (p < end)
     {
+      const char* eol = static_cast<const char*>(std::memchr(p, '\n', end - p));
+      if (!eol) eol = end;
       ++lineNo;
-      const auto hash = line.find('#');
-      if (hash != std::string::npos) line.resize(hash);
-      tokenize(line.data(), line.data() + line.size(), parts);
-      for (auto& t : parts) tokens.emplace_back(std::move(t), lineNo);
+      const char* hash = static_cast<const char*>(std::memchr(p, '#', eol - p));
+      tokenize(p, hash ? hash : eol, parts);
+      for (std::string_view t : parts) tokens.push_back({t, lineNo});
+      p = eol + 1;
     }
   }
   size_t pos = 0;
-  auto next = [&](const char* what) -> const std::pair<std::string, int>&
+  auto next = [&](const char* what) -> const Token&
   {
     if (pos >= tokens.size()) throw Error(path + ": truncated file: missing " + std::string(what));
     return tokens[pos++];
   };
   const auto& header = next("header");
-  if (header.first != "OFF")
-    throw Error(path + ": not an OFF file (first word is '" + header.first.substr(0, 20) +
-                "', expected 'OFF')");
+  if (header.text != "OFF")
+    throw Error(path + ": not an OFF file (first word is '" +
+                std::string(header.text.substr(0, 20)) + "', expected 'OFF')");
   long counts[3];
   for (long& c : counts)
   {
     const auto& t = next("vertex/face/edge counts");
-    if (!parseInt(t.first, c) || c < 0)
-      throw Error(where(path, t.second) + "malformed count '" + t.first + "'");
+    if (!parseInt(t.text, c) || c < 0)
+      throw Error(where(path, t.line) + "malformed count '" + std::string(t.text) + "'");
   }
   // Each vertex takes 3 values and each face at least 4: a header that declares more than the
   // file holds is refused before anything is allocated.
@@ -200,32 +293,32 @@ TriangleMesh readOFF(const std::string& path)
   for (long i = 0; i < 3 * counts[0]; ++i)
   {
     const auto& t = next("vertex coordinates");
-    if (!parseDouble(t.first, coords[i]))
-      throw Error(where(path, t.second) + "malformed coordinate '" + t.first + "'");
+    if (!parseDouble(t.text, coords[i]))
+      throw Error(where(path, t.line) + "malformed coordinate '" + std::string(t.text) + "'");
   }
   std::vector<int> faces, polygon;
   for (long f = 0; f < counts[1]; ++f)
   {
     const auto& nt = next("faces");
-    const int line = nt.second;
+    const int line = nt.line;
     long n;
-    if (!parseInt(nt.first, n) || n < 3)
+    if (!parseInt(nt.text, n) || n < 3)
       throw Error(where(path, line) + "face " + std::to_string(f) +
-                  " has an invalid vertex count '" + nt.first + "'");
+                  " has an invalid vertex count '" + std::string(nt.text) + "'");
     polygon.clear();
     for (long k = 0; k < n; ++k)
     {
       const auto& t = next("face indices");
       long idx;
-      if (!parseInt(t.first, idx))
-        throw Error(where(path, t.second) + "malformed face index '" + t.first + "'");
+      if (!parseInt(t.text, idx))
+        throw Error(where(path, t.line) + "malformed face index '" + std::string(t.text) + "'");
       if (idx < 0 || idx >= counts[0])
-        throw Error(where(path, t.second) + "face index " + std::to_string(idx) +
+        throw Error(where(path, t.line) + "face index " + std::to_string(idx) +
                     " out of range (file has " + std::to_string(counts[0]) + " vertices)");
       polygon.push_back(static_cast<int>(idx));
     }
     // Optional per-face colour values run to the end of the line.
-    while (pos < tokens.size() && tokens[pos].second == line) ++pos;
+    while (pos < tokens.size() && tokens[pos].line == line) ++pos;
     addFan(polygon, faces);
   }
   return meshFromArrays(coords, faces);

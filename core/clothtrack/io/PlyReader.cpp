@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -49,6 +50,12 @@ int typeSize(const std::string& t)
   return 0;
 }
 
+/// std::isspace in the C locale, without its call per character.
+bool isSpace(char c)
+{
+  return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
 class Cursor
 {
 public:
@@ -59,7 +66,8 @@ public:
 
   double read(const std::string& type)
   {
-    if (format_ == Format::Ascii) return readAscii();
+    // Integer types (char, uchar, short, ..., uint32) are read as integers first: faster.
+    if (format_ == Format::Ascii) return readAscii(type[0] != 'f' && type[0] != 'd');
     const int size = typeSize(type);
     if (pos_ + size > data_.size())
       throw Error(path_ + ": truncated file (binary data ends early)");
@@ -89,14 +97,34 @@ private:
     return static_cast<double>(value);
   }
 
-  double readAscii()
+  double readAscii(bool integral)
   {
-    while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
+    while (pos_ < data_.size() && isSpace(data_[pos_])) ++pos_;
     if (pos_ >= data_.size()) throw Error(path_ + ": truncated file (ASCII data ends early)");
     const char* start = data_.c_str() + pos_;
+    const char* last = data_.c_str() + data_.size();
+    if (integral)
+    {
+      long long whole = 0;
+      const auto [stop, error] = std::from_chars(start, last, whole);
+      if (error == std::errc() && stop > start && (stop == last || isSpace(*stop)))
+      {
+        pos_ += stop - start;
+        return static_cast<double>(whole);
+      }
+    }
+    // std::from_chars where it reads the whole word (several times faster, same rounding); what
+    // it does not (a '+' sign, hexadecimal, out of range) is strtod's, as before.
+    double value = 0;
+    const auto [stop, error] = std::from_chars(start, last, value);
+    if (error == std::errc() && stop > start && (stop == last || isSpace(*stop)))
+    {
+      pos_ += stop - start;
+      return value;
+    }
     char* end = nullptr;
     errno = 0;
-    const double value = std::strtod(start, &end);
+    value = std::strtod(start, &end);
     if (end == start) throw Error(path_ + ": malformed number near byte " + std::to_string(pos_));
     pos_ += end - start;
     return value;
