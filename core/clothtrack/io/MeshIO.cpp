@@ -248,6 +248,7 @@ TriangleMesh readOFF(const std::string& path)
     int line;
   };
   std::vector<Token> tokens;
+  tokens.reserve(text.size() / 6); // a number and its separator take 6 bytes or more, mostly
   {
     std::vector<std::string_view> parts;
     int lineNo = 0;

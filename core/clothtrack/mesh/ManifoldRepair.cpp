@@ -9,9 +9,8 @@ namespace clothtrack
 {
 namespace
 {
-int removeExtraEdgeFaces(TriangleMesh& mesh)
+int removeExtraEdgeFaces(TriangleMesh& mesh, const MeshTopology& topo)
 {
-  const MeshTopology topo = buildTopology(mesh);
   std::vector<char> removed(mesh.numFaces(), 0);
   int count = 0;
   for (int e = 0; e < topo.numEdges(); ++e)
@@ -39,21 +38,21 @@ int removeExtraEdgeFaces(TriangleMesh& mesh)
   return count;
 }
 
-int splitBowTies(TriangleMesh& mesh)
+int splitBowTies(TriangleMesh& mesh, const MeshTopology& topo)
 {
-  const MeshTopology topo = buildTopology(mesh);
   std::vector<Vec3> extra;
   int splits = 0;
+  std::vector<int> labels, stack; // reused from vertex to vertex
   for (int v = 0; v < mesh.numVertices(); ++v)
   {
     int fans = 0;
     // Label the faces around v by fan (faces connected through edges that contain v).
-    std::vector<int> labels(topo.vertexFaces.degree(v), -1);
+    labels.assign(topo.vertexFaces.degree(v), -1);
     const int* faces = topo.vertexFaces.begin(v);
     for (int s = 0; s < topo.vertexFaces.degree(v); ++s)
     {
       if (labels[s] >= 0) continue;
-      std::vector<int> stack{s};
+      stack.assign(1, s);
       labels[s] = fans;
       while (!stack.empty())
       {
@@ -102,8 +101,10 @@ int splitBowTies(TriangleMesh& mesh)
 ManifoldRepairReport makeManifold(TriangleMesh& mesh)
 {
   ManifoldRepairReport report;
-  report.removedFaces = removeExtraEdgeFaces(mesh);
-  report.splitVertices = splitBowTies(mesh);
+  // One topology serves both steps unless the first removed faces.
+  const MeshTopology topo = buildTopology(mesh);
+  report.removedFaces = removeExtraEdgeFaces(mesh, topo);
+  report.splitVertices = splitBowTies(mesh, report.removedFaces > 0 ? buildTopology(mesh) : topo);
   return report;
 }
 } // namespace clothtrack

@@ -10,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <set>
 
 namespace clothtrack
 {
@@ -65,9 +64,8 @@ CleaningReport cleanMesh(TriangleMesh& mesh, const CleaningOptions& options,
     }
   }
 
-  std::vector<std::array<int, 3>> faces;
-  faces.reserve(mesh.numFaces());
-  std::set<std::array<int, 3>> seen;
+  std::vector<std::array<int, 3>> candidates;
+  candidates.reserve(mesh.numFaces());
   for (int f = 0; f < mesh.numFaces(); ++f)
   {
     std::array<int, 3> tri = {representative[mesh.F(f, 0)], representative[mesh.F(f, 1)],
@@ -85,16 +83,28 @@ CleaningReport cleanMesh(TriangleMesh& mesh, const CleaningOptions& options,
         continue;
       }
     }
-    // The same triangle twice (any winding) is a duplicate, not a surface.
-    std::array<int, 3> key = tri;
-    std::sort(key.begin(), key.end());
-    if (!seen.insert(key).second)
-    {
-      ++report.duplicateFaces;
-      continue;
-    }
-    faces.push_back(tri);
+    candidates.push_back(tri);
   }
+  // The same triangle twice (any winding) is a duplicate, not a surface: the first one is kept.
+  // (Sorted keys rather than a set: one allocation instead of one per face.)
+  std::vector<std::pair<std::array<int, 3>, int>> keys(candidates.size());
+  for (size_t f = 0; f < candidates.size(); ++f)
+  {
+    keys[f] = {candidates[f], static_cast<int>(f)};
+    std::sort(keys[f].first.begin(), keys[f].first.end());
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<char> repeated(candidates.size(), 0);
+  for (size_t k = 1; k < keys.size(); ++k)
+    if (keys[k].first == keys[k - 1].first)
+    {
+      repeated[keys[k].second] = 1;
+      ++report.duplicateFaces;
+    }
+  std::vector<std::array<int, 3>> faces;
+  faces.reserve(candidates.size());
+  for (size_t f = 0; f < candidates.size(); ++f)
+    if (!repeated[f]) faces.push_back(candidates[f]);
 
   std::vector<int> newIndex(nv, -1);
   int kept = 0;
