@@ -235,6 +235,13 @@ TriangleMesh readPLY(const std::string& path)
     }
     if (isFace && indexProperty < 0)
       throw Error(path + ": PLY face element lacks a vertex_indices list");
+    // An element without properties holds no data, whatever its count: nothing to read (a
+    // count of 2e10 once looped that many times over nothing). One with properties takes at
+    // least a byte an instance.
+    if (e.properties.empty()) continue;
+    if (static_cast<size_t>(e.count) > data.size())
+      throw Error(path + ": truncated file (declares " + std::to_string(e.count) + " '" + e.name +
+                  "' elements)");
     std::vector<int> polygon;
     for (long i = 0; i < e.count; ++i)
     {
