@@ -459,6 +459,34 @@ void runCorrespondenceStage(Run& run, const AlignedOutput& output)
   progress.finish();
 }
 
+/// Where align keeps the template fit's solver state after frame k while the fit runs.
+std::string solverStatePath(const Run& run, int k)
+{
+  return (run.out / "fit_state" / frameFileName(run.input.frameNumber[k])).string();
+}
+
+/// Hooks that keep the template fit's solver state after each frame (TemplateFitterState), so
+/// that a stopped run resumes exactly. Frame k's state is on disk before its aligned frame (both
+/// go through `writer`, in order), and the state before it is removed after that frame (the
+/// `fitted` hook): whichever frame a stopped run wrote last, the state that follows it is there.
+void keepSolverStates(const Run& run, BackgroundWriter& writer, SequenceFitHooks& hooks)
+{
+  fs::create_directories(run.out / "fit_state");
+  hooks.resumedState = [&run](int k)
+  {
+    std::optional<TemplateFitterState> state =
+        readFitterState(solverStatePath(run, k), run.templateMesh().numVertices());
+    if (!state)
+      std::fprintf(stderr,
+                   "warning: the solver state after frame %d (%s) was not kept: the frames fitted "
+                   "after it may differ from an uninterrupted run within the solver's tolerance\n",
+                   k, run.input.files[k].c_str());
+    return state;
+  };
+  hooks.fitterState = [&run, &writer](int k, const TemplateFitterState& state)
+  { writer.submit([path = solverStatePath(run, k), state]() { writeFitterState(path, state); }); };
+}
+
 /// Stage 3: both chains through the core, each frame written as soon as it is fitted.
 void runFitStage(Run& run, const AlignedOutput& output)
 {
@@ -502,30 +530,14 @@ void runFitStage(Run& run, const AlignedOutput& output)
     hooks.start = bodyStartPrediction(run.posedByBody, std::move(hooks.start));
   if (s.retryDoubtful) judgeFits(hooks, run.templateMesh(), {}, run.posedByBody);
   hooks.resumed = [&](int k) { return output.earlier(in.frameNumber[k]); };
-  const fs::path stateFolder = run.out / "fit_state";
-  fs::create_directories(stateFolder);
-  auto statePath = [&](int k) { return (stateFolder / frameFileName(in.frameNumber[k])).string(); };
-  hooks.resumedState = [&](int k)
-  {
-    std::optional<TemplateFitterState> state =
-        readFitterState(statePath(k), run.templateMesh().numVertices());
-    if (!state)
-      std::fprintf(stderr,
-                   "warning: the solver state after frame %d (%s) was not kept: the frames fitted "
-                   "after it may differ from an uninterrupted run within the solver's tolerance\n",
-                   k, in.files[k].c_str());
-    return state;
-  };
   BackgroundWriter writer; // finishes before what its tasks refer to goes
-  // Frame k's solver state is on disk before its aligned frame, and the state before it is
-  // removed after: whichever frame a stopped run wrote last, the state that follows it is there.
-  hooks.fitterState = [&](int k, const TemplateFitterState& state)
-  { writer.submit([path = statePath(k), state]() { writeFitterState(path, state); }); };
+  keepSolverStates(run, writer, hooks);
   hooks.fitted = [&](int k, const FrameFit& fit)
   {
     errorsOf(k, fit.positions);
+    // Once frame k is written, the state of the frame before it is no longer needed.
     const int previous = k < j ? k + 1 : k - 1;
-    const std::string used = k != j && previous != j ? statePath(previous) : std::string();
+    const std::string used = k != j && previous != j ? solverStatePath(run, previous) : "";
     // The writer gets copies: the chain moves on to the next frame at once.
     writer.submit(
         [&output, number = in.frameNumber[k], fit, errors = run.errors[k], used]()
@@ -543,7 +555,7 @@ void runFitStage(Run& run, const AlignedOutput& output)
   };
   run.fits = fitTemplateSequence(run.templateMesh(), j, n, hooks, s.fit);
   writer.finish();
-  fs::remove_all(stateFolder); // every frame is written: no fit continues from these
+  fs::remove_all(run.out / "fit_state"); // every frame is written: no fit continues from these
   progress.finish();
   for (int k = 0; k < n; ++k)
     if (run.fits[k].resumed) errorsOf(k, run.fits[k].positions);

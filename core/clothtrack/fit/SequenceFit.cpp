@@ -120,6 +120,7 @@ struct Chains
       for (int k = from; k != to; k += direction)
       {
         Inputs in;
+        std::optional<TemplateFitterState> earlierState; // after the last resumed frame
         {
           const std::lock_guard<std::mutex> lock(mutex);
           if (stop) return;
@@ -130,8 +131,7 @@ struct Chains
           }
           const int previous = k - direction;
           if (fits[previous].resumed && previous != from - direction && hooks.resumedState)
-            if (std::optional<TemplateFitterState> state = hooks.resumedState(previous))
-              fitter.restore(*state);
+            earlierState = hooks.resumedState(previous);
           in.frame = hooks.frame(k);
           if (hooks.targets)
             if (const VertexTargets* t = hooks.targets(k)) in.targets = *t;
@@ -142,6 +142,7 @@ struct Chains
         FrameFit fit;
         try
         {
+          if (earlierState) fitter.restore(*earlierState); // factorises: outside the lock
           fit = fitFrame(fitter, k, in);
         }
         catch (const Error& e)
