@@ -301,9 +301,14 @@ TemplateFitterState TemplateFitter::state() const
 void TemplateFitter::restore(const TemplateFitterState& state)
 {
   Impl& m = *impl_;
-  m.factors.clear();
-  m.stale.clear();
-  m.factored.clear();
+  // Whatever goes wrong leaves a fitter without factorisations, which starts afresh.
+  auto forget = [&m]()
+  {
+    m.factors.clear();
+    m.stale.clear();
+    m.factored.clear();
+  };
+  forget();
   if (state.vertices != m.n)
     throw Error("Template fit: the solver state was made for " + std::to_string(state.vertices) +
                 " template vertices, this template has " + std::to_string(m.n) + ".");
@@ -317,7 +322,7 @@ void TemplateFitter::restore(const TemplateFitterState& state)
                                                        [](double x) { return std::isfinite(x); });
     if (stage.blocks.size() != 10 * static_cast<size_t>(m.n) || !finite)
     {
-      m.factored.clear(), m.factors.clear(), m.stale.clear();
+      forget();
       throw Error("Template fit: the solver state of stage " + std::to_string(s + 1) +
                   " is not a matrix of this template.");
     }
@@ -329,7 +334,7 @@ void TemplateFitter::restore(const TemplateFitterState& state)
     }
     catch (const Error&)
     {
-      m.factored.clear(), m.factors.clear(), m.stale.clear();
+      forget();
       throw;
     }
   }

@@ -152,7 +152,14 @@ TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
   bool inGroup = onlyGroup.empty();
   const char* p = text.data();
   const char* end = p + text.size();
-  std::vector<long> quickFace;
+  std::vector<long> faceIndices;
+  auto recordFace = [&]()
+  {
+    faceSize.push_back(static_cast<int>(faceIndices.size()));
+    faceLine.push_back(lineNo);
+    faceVertexCount.push_back(static_cast<int>(coords.size() / 3));
+    rawFaces.insert(rawFaces.end(), faceIndices.begin(), faceIndices.end());
+  };
   {
     // A line is a vertex or a face, mostly: room for one of each per line saves the regrowing.
     size_t lines = 1;
@@ -178,12 +185,9 @@ TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
         coords.insert(coords.end(), xyz, xyz + 3);
         continue;
       }
-      if (line[0] == 'f' && inGroup && readFaceQuickly(line + 1, eol, quickFace))
+      if (line[0] == 'f' && inGroup && readFaceQuickly(line + 1, eol, faceIndices))
       {
-        faceSize.push_back(static_cast<int>(quickFace.size()));
-        faceLine.push_back(lineNo);
-        faceVertexCount.push_back(static_cast<int>(coords.size() / 3));
-        rawFaces.insert(rawFaces.end(), quickFace.begin(), quickFace.end());
+        recordFace();
         continue;
       }
     }
@@ -204,17 +208,16 @@ TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
     {
       if (tokens.size() < 4)
         throw Error(where(path, lineNo) + "face with fewer than 3 vertices (truncated file?)");
-      faceSize.push_back(static_cast<int>(tokens.size()) - 1);
-      faceLine.push_back(lineNo);
-      faceVertexCount.push_back(static_cast<int>(coords.size() / 3));
+      faceIndices.clear();
       for (size_t k = 1; k < tokens.size(); ++k)
       {
         long idx;
         if (!parseInt(tokens[k], idx))
           throw Error(where(path, lineNo) + "malformed face index '" + std::string(tokens[k]) +
                       "'");
-        rawFaces.push_back(idx);
+        faceIndices.push_back(idx);
       }
+      recordFace();
     }
   }
   const long nv = static_cast<long>(coords.size() / 3);

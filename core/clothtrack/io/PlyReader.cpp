@@ -223,16 +223,8 @@ TriangleMesh readPLY(const std::string& path)
           !e.properties[p].countType.empty())
         indexProperty = static_cast<int>(p);
     }
-    if (isVertex)
-    {
-      if (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0)
-        throw Error(path + ": PLY vertex element lacks x, y or z");
-      haveVertices = true;
-      numVertices = e.count;
-      if (static_cast<size_t>(e.count) > data.size()) // each vertex needs at least one byte
-        throw Error(path + ": truncated file (declares " + std::to_string(e.count) + " vertices)");
-      coords.reserve(3 * e.count);
-    }
+    if (isVertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0))
+      throw Error(path + ": PLY vertex element lacks x, y or z");
     if (isFace && indexProperty < 0)
       throw Error(path + ": PLY face element lacks a vertex_indices list");
     // An element without properties holds no data, whatever its count: nothing to read (a
@@ -242,6 +234,12 @@ TriangleMesh readPLY(const std::string& path)
     if (static_cast<size_t>(e.count) > data.size())
       throw Error(path + ": truncated file (declares " + std::to_string(e.count) + " '" + e.name +
                   "' elements)");
+    if (isVertex)
+    {
+      haveVertices = true;
+      numVertices = e.count;
+      coords.reserve(3 * e.count);
+    }
     std::vector<int> polygon;
     for (long i = 0; i < e.count; ++i)
     {
