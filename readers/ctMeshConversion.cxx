@@ -4,6 +4,7 @@
 #include "ctVtkMessageCapture.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/io/FrameList.h>
 #include <clothtrack/io/MeshIO.h>
 #include <clothtrack/io/ReaderPrechecks.h>
 #include <clothtrack/mesh/MeshValidation.h>
@@ -35,14 +36,6 @@ namespace clothtrack
 {
 namespace
 {
-std::string lowerExtension(const std::string& path)
-{
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 // Collects the error messages a VTK reader or writer emits instead of letting them go to the
 // console, so that they can be reported once with the file name.
 struct ErrorCollector
@@ -175,7 +168,7 @@ TriangleMesh readMeshFileUnguarded(const std::string& path)
   if (!fs::exists(path, ec)) throw Error(path + ": no such file");
   if (!fs::is_regular_file(path, ec)) throw Error(path + ": not a regular file");
   if (fs::file_size(path, ec) == 0) throw Error(path + ": empty file");
-  const std::string ext = lowerExtension(path);
+  const std::string ext = lowerCaseExtension(path);
   if (ext == ".obj") return readOBJ(path);
   if (ext == ".off") return readOFF(path);
   vtkSmartPointer<vtkPolyData> data;
@@ -221,8 +214,9 @@ TriangleMesh readMeshFile(const std::string& path)
 
 void writeMeshFile(const std::string& path, vtkPolyData* polyData)
 {
-  const std::string ext = lowerExtension(path);
-  const std::string tmp = path + ".part";
+  const std::string ext = lowerCaseExtension(path);
+  // The extension stays last: VTK's PLY writer appends ".ply" to a name that does not end so.
+  const std::string tmp = path.substr(0, path.size() - ext.size()) + ".part" + ext;
   ErrorCollector errors;
   auto run = [&](auto writer)
   {
@@ -275,23 +269,28 @@ void writeMeshFile(const std::string& path, vtkPolyData* polyData)
   if (ec) throw Error(path + ": cannot rename temporary file (" + ec.message() + ")");
 }
 
+void toMetresYUp(Points& points, const FrameConventions& conventions)
+{
+  if (conventions.unitScale != 1.0) points *= conventions.unitScale;
+  if (conventions.upAxis == 2) // (x, y, z) -> (x, z, -y)
+  {
+    const Eigen::VectorXd y = points.col(1);
+    points.col(1) = points.col(2);
+    points.col(2) = -y;
+  }
+  else if (conventions.upAxis == 0) // (x, y, z) -> (-y, x, z)
+  {
+    const Eigen::VectorXd x = points.col(0);
+    points.col(0) = -points.col(1);
+    points.col(1) = x;
+  }
+}
+
 TriangleMesh loadFrame(const std::string& path, const FrameConventions& conventions,
                        std::vector<std::string>* warnings)
 {
   TriangleMesh mesh = readMeshFile(path);
-  if (conventions.unitScale != 1.0) mesh.V *= conventions.unitScale;
-  if (conventions.upAxis == 2) // (x, y, z) -> (x, z, -y)
-  {
-    const Eigen::VectorXd y = mesh.V.col(1);
-    mesh.V.col(1) = mesh.V.col(2);
-    mesh.V.col(2) = -y;
-  }
-  else if (conventions.upAxis == 0) // (x, y, z) -> (-y, x, z)
-  {
-    const Eigen::VectorXd x = mesh.V.col(0);
-    mesh.V.col(0) = -mesh.V.col(1);
-    mesh.V.col(1) = x;
-  }
+  toMetresYUp(mesh.V, conventions);
   const CleaningReport report = validateAndClean(mesh, path);
   if (warnings)
     for (const auto& w : report.warnings) warnings->push_back(path + ": " + w);

@@ -41,6 +41,9 @@ struct FrameConventions
   int upAxis = 1;         ///< 0 = +X, 1 = +Y, 2 = +Z is up in the file; output is Y-up
 };
 
+/// Points (or normals, with unitScale 1) from a file's unit and up axis to metres, Y up.
+CTREADERS_EXPORT void toMetresYUp(Points& points, const FrameConventions& conventions);
+
 /// readMeshFile, then units and up axis, then validateAndClean. Repairs made (merged
 /// vertices, removed zero-area faces) are appended to `warnings` as "path: what".
 CTREADERS_EXPORT TriangleMesh loadFrame(const std::string& path,

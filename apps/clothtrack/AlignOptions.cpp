@@ -1,4 +1,5 @@
 #include "AlignOptions.h"
+#include "ReconstructRun.h"
 
 #include <algorithm>
 #include <cmath>
@@ -207,6 +208,7 @@ std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode
   addRunOptions(options, s);
   addCorrespondenceOptions(options, s, criterion);
   addFitOptions(options, s, stageSpec);
+  addReconstructionOptions(options, s.reconstruction);
   addSequenceOptions(options, s.sequence);
   po::positional_options_description positional;
   positional.add("input", 1);

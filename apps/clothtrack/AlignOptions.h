@@ -8,6 +8,7 @@
 #include <clothtrack/eval/AlignmentError.h>
 #include <clothtrack/fit/MotionPrediction.h>
 #include <clothtrack/fit/TemplateFit.h>
+#include <clothtrack/reconstruction/SurfaceReconstruction.h>
 #include <clothtrack/selection/TemplateSelection.h>
 
 #include <nlohmann/json.hpp>
@@ -40,6 +41,8 @@ struct AlignSettings
   StartPredictionOptions prediction;
   TemplateFitOptions fit;
   PatchCorrespondenceOptions patches;
+  /// Point-cloud input is reconstructed into meshes first (OUT/reconstructed).
+  ReconstructionOptions reconstruction;
   /// Each frame's fit starts from the template posed by the body fitted to the frame
   /// (pipeline/BodyStartPrediction.h); frames with a doubtful body fit start from the landmark
   /// prediction.

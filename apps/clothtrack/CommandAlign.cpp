@@ -10,10 +10,12 @@
 #include "Commands.h"
 #include "ErrorMetrics.h"
 #include "Progress.h"
+#include "ReconstructRun.h"
 #include "Report.h"
 #include "TextFile.h"
 
 #include "ctMeshConversion.h"
+#include "ctPointCloudFile.h"
 
 #include <clothtrack/base/Error.h>
 #include <clothtrack/base/Parallel.h>
@@ -222,11 +224,30 @@ void warnAboutGaps(const std::vector<std::string>& files)
   }
 }
 
+/// Point clouds among the frames in [begin, end) are reconstructed into OUT/reconstructed first
+/// (in metres, Y up); the list then names the meshes ("" for a cloud that could not be).
+bool reconstructClouds(const AlignSettings& s, std::vector<std::string>& files, int begin, int end)
+{
+  if (!std::any_of(files.begin() + begin, files.begin() + end, isPointCloudPath)) return false;
+  const std::vector<std::string> clouds(files.begin() + begin, files.begin() + end);
+  for (const auto& file : clouds)
+    if (!isPointCloudPath(file))
+      throw UsageError{file + ": a mesh among point clouds; give a sequence of one kind"};
+  ReconstructSettings settings{s.reconstruction, toConventions(s.sequence), s.skipBadFrames};
+  const auto meshes =
+      reconstructSequence(clouds, (fs::path(s.output) / "reconstructed").string(), settings, begin);
+  std::copy(meshes.begin(), meshes.end(), files.begin() + begin);
+  return true;
+}
+
 Input readInput(const AlignSettings& s)
 {
-  const FrameConventions conventions = toConventions(s.sequence);
-  const std::vector<std::string> allFiles = listFrames(s.input);
+  FrameConventions conventions = toConventions(s.sequence);
+  std::vector<std::string> allFiles = listFrames(s.input);
   const auto [begin, end] = frameRange(s.frameSpec, static_cast<int>(allFiles.size()));
+  const bool fromClouds = reconstructClouds(s, allFiles, begin, end);
+  const FrameConventions truthConventions = conventions;
+  if (fromClouds) conventions = FrameConventions{};
   std::vector<std::string> allTruth;
   if (!s.truthInput.empty())
   {
@@ -242,6 +263,7 @@ Input readInput(const AlignSettings& s)
   {
     try
     {
+      if (allFiles[k].empty()) throw Error("frame " + std::to_string(k) + ": no reconstruction");
       std::vector<std::string> warnings;
       in.frames.push_back(loadFrame(allFiles[k], conventions, &warnings));
       for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -262,7 +284,7 @@ Input readInput(const AlignSettings& s)
   if (in.count() < 2) throw UsageError{s.input + ": at least two readable frames are needed"};
   for (const std::string& w : subjectWarnings(in.frames.front()))
     std::fprintf(stderr, "warning: %s: %s\n", in.files.front().c_str(), w.c_str());
-  in.truth = loadGroundTruth(in.truthFiles, conventions);
+  in.truth = loadGroundTruth(in.truthFiles, truthConventions);
   checkGroundTruth(in);
   // Markers are read now, so that a bad file stops the run before the long stages.
   if (!s.markersPath.empty()) in.markers = selectedMarkers(s.markersPath, in.frameNumber);

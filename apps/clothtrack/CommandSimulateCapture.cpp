@@ -7,6 +7,9 @@
 #include "CaptureOutput.h"
 
 #include "ctMeshConversion.h"
+#include "ctPointCloudFile.h"
+
+#include <clothtrack/cloud/DepthCapture.h>
 
 #include <clothtrack/io/FrameList.h>
 #include <clothtrack/io/MeshIO.h>
@@ -21,6 +24,58 @@ namespace fs = std::filesystem;
 
 namespace clothtrack::app
 {
+namespace
+{
+/// Options of the depth-camera rig (--point-cloud).
+struct CloudCapture
+{
+  bool enabled = false;
+  DepthRig rig;
+  std::string format = "pcd";
+};
+
+void addCloudOptions(po::options_description& options, CloudCapture& cloud)
+{
+  options.add_options()("point-cloud", po::bool_switch(&cloud.enabled),
+                        "capture point clouds from depth cameras instead of meshes "
+                        "(frames/frame_NNNN.pcd; the input is the ground truth)")(
+      "cameras", po::value(&cloud.rig.cameras)->default_value(4),
+      "point clouds: depth cameras on a circle around the subject")(
+      "camera-distance", po::value(&cloud.rig.distance)->default_value(3.0),
+      "point clouds: horizontal distance of the cameras from the subject, metres")(
+      "outliers", po::value(&cloud.rig.outliers)->default_value(0.01),
+      "point clouds: stray points added, as a share of the points seen")(
+      "cloud-format", po::value(&cloud.format)->default_value("pcd"),
+      "point clouds: pcd (binary_compressed), ply or xyz");
+}
+
+void checkCloudOptions(const CloudCapture& cloud)
+{
+  if (!(cloud.rig.cameras >= 1 && cloud.rig.cameras <= 64))
+    throw UsageError{"--cameras must be between 1 and 64"};
+  if (!(cloud.rig.distance >= 0.5 && cloud.rig.distance <= 20))
+    throw UsageError{"--camera-distance must be between 0.5 and 20 metres"};
+  if (!(cloud.rig.outliers >= 0 && cloud.rig.outliers <= 1))
+    throw UsageError{"--outliers must be in [0, 1]"};
+  if (cloud.format != "pcd" && cloud.format != "ply" && cloud.format != "xyz")
+    throw UsageError{"--cloud-format must be pcd, ply or xyz"};
+}
+
+/// The cloud the rig sees of frame k, written as OUT/frames/frame_NNNN.<format>. The rig
+/// stands where the first frame's subject is.
+void captureCloudAndWrite(const std::string& output, long k, const TriangleMesh& truth,
+                          CloudCapture& cloud, unsigned seed)
+{
+  if (cloud.rig.centre.isZero())
+    cloud.rig.centre =
+        0.5 * (truth.V.colwise().minCoeff() + truth.V.colwise().maxCoeff()).transpose();
+  DepthRig rig = cloud.rig;
+  rig.seed = seed * 7919u + static_cast<unsigned>(k);
+  writePointCloudFile((fs::path(output) / "frames" / (frameStem(k) + "." + cloud.format)).string(),
+                      captureDepth(truth, rig));
+}
+} // namespace
+
 int runSimulateCapture(const Args& args)
 {
   std::string input, output;
@@ -46,6 +101,8 @@ int runSimulateCapture(const Args& args)
       "random seed (runs with the same seed are identical)")(
       "no-hull-fill", po::bool_switch(),
       "do not fill regions cameras cannot see into (inside a dress, enclosed gaps)");
+  CloudCapture cloud;
+  addCloudOptions(options, cloud);
   addSequenceOptions(options, seq);
   po::positional_options_description positional;
   positional.add("input", 1);
@@ -59,6 +116,8 @@ int runSimulateCapture(const Args& args)
     throw UsageError{"--voxel must be between 0.002 and 0.2 metres"};
   capture.fillEnclosed = !values["no-hull-fill"].as<bool>();
   if (!(drop >= 0 && drop < 1)) throw UsageError{"--drop must be in [0, 1)"};
+  checkCloudOptions(cloud);
+  cloud.rig.noise = capture.noise;
 
   const std::vector<std::string> frames = listFrames(input);
   makeOutputFolders(output);
@@ -71,15 +130,19 @@ int runSimulateCapture(const Args& args)
     const bool dropped = uniform(dropRng) < drop;
     if (!dropped)
     {
-      captureAndWrite(output, static_cast<long>(k), loadFrame(frames[k], conventions), capture,
-                      static_cast<unsigned>(seed));
+      const TriangleMesh truth = loadFrame(frames[k], conventions);
+      if (cloud.enabled)
+        captureCloudAndWrite(output, static_cast<long>(k), truth, cloud,
+                             static_cast<unsigned>(seed));
+      else
+        captureAndWrite(output, static_cast<long>(k), truth, capture, static_cast<unsigned>(seed));
       ++written;
     }
     progress.step(static_cast<int>(k + 1));
   }
   progress.finish();
-  std::printf("wrote %d captured frames (%zu dropped) to %s/frames\n", written,
-              frames.size() - written, output.c_str());
+  std::printf("wrote %d captured %s (%zu dropped) to %s/frames\n", written,
+              cloud.enabled ? "point clouds" : "frames", frames.size() - written, output.c_str());
   return 0;
 }
 } // namespace clothtrack::app

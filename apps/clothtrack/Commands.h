@@ -18,6 +18,7 @@ int runRender(const Args& args);
 int runConvert(const Args& args);
 int runBodyModel(const Args& args);
 int runSimulateCapture(const Args& args);
+int runReconstruct(const Args& args);
 int runSynth(const Args& args);
 int runImportMakeHuman(const Args& args);
 int runSelectTemplate(const Args& args);

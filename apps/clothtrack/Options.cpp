@@ -1,5 +1,7 @@
 #include "Options.h"
 
+#include "ctPointCloudFile.h"
+
 #include <clothtrack/io/FrameList.h>
 #include <clothtrack/mesh/SubjectSize.h>
 
@@ -47,7 +49,11 @@ void resolveAutomatic(SequenceOptions& options, const std::string& input)
 {
   if (options.unit != "auto" && options.up != "auto") return;
   const std::vector<std::string> frames = clothtrack::listFrames(input);
-  const clothtrack::TriangleMesh first = clothtrack::readMeshFile(frames.front());
+  clothtrack::TriangleMesh first;
+  if (clothtrack::isPointCloudPath(frames.front()))
+    first.V = clothtrack::readPointCloudFile(frames.front()).P;
+  else
+    first = clothtrack::readMeshFile(frames.front());
   if (options.up == "auto")
   {
     options.up = std::string(1, "xyz"[clothtrack::inferUpAxis(first)]);

@@ -60,18 +60,24 @@ long frameNumberFromName(const std::string& path)
   return value;
 }
 
+std::string lowerCaseExtension(const std::string& path)
+{
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
 const std::vector<std::string>& supportedMeshExtensions()
 {
-  static const std::vector<std::string> extensions = {".obj", ".ply", ".stl",
-                                                      ".off", ".vtp", ".vtk"};
+  static const std::vector<std::string> extensions = {".obj", ".ply", ".stl", ".off",
+                                                      ".vtp", ".vtk", ".xyz", ".pcd"};
   return extensions;
 }
 
 bool hasSupportedMeshExtension(const std::string& path)
 {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lowerCaseExtension(path);
   const auto& all = supportedMeshExtensions();
   return std::find(all.begin(), all.end(), ext) != all.end();
 }

@@ -11,7 +11,11 @@ bool naturalLess(const std::string& a, const std::string& b);
 /// The last run of digits in a file's name (without folder and extension), -1 if none.
 long frameNumberFromName(const std::string& path);
 
-/// File extensions (lower case, with dot) that the sequence reader understands.
+/// The file's extension in lower case, with its dot ("" when it has none).
+std::string lowerCaseExtension(const std::string& path);
+
+/// File extensions (lower case, with dot) that the sequence reader understands: meshes, and
+/// point clouds (.xyz .pcd, and .ply without faces) that are reconstructed into meshes.
 const std::vector<std::string>& supportedMeshExtensions();
 bool hasSupportedMeshExtension(const std::string& path);
 

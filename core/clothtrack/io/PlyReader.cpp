@@ -2,6 +2,7 @@
 // corrupt file is an error, not a crash.
 #include "FileBytes.h"
 #include "MeshIO.h"
+#include "PointCloudIO.h"
 #include <clothtrack/base/Error.h>
 
 #include <cctype>
@@ -135,9 +136,36 @@ private:
   size_t pos_;
   Format format_;
 };
-} // namespace
+/// What a PLY file holds for the core: positions and triangles, and per vertex the optional
+/// normals (nx ny nz) and colours (red green blue).
+struct PlyContents
+{
+  std::vector<double> coords;
+  std::vector<int> faces;
+  std::vector<double> normals;
+  std::vector<double> colours; // 0-255
+  long numVertices = 0;
+};
 
-TriangleMesh readPLY(const std::string& path)
+/// Index of each named vertex property in `e`, -1 where absent.
+template <size_t N>
+void findProperties(const Element& e, const char* const (&names)[N], int (&index)[N])
+{
+  for (size_t k = 0; k < N; ++k)
+  {
+    index[k] = -1;
+    for (size_t p = 0; p < e.properties.size(); ++p)
+      if (e.properties[p].countType.empty() && e.properties[p].name == names[k])
+        index[k] = static_cast<int>(p);
+  }
+}
+
+bool allFound(const int (&index)[3])
+{
+  return index[0] >= 0 && index[1] >= 0 && index[2] >= 0;
+}
+
+PlyContents readPLYContents(const std::string& path)
 {
   const std::string data = readFileBytes(path);
   if (data.empty()) throw Error(path + ": empty file");
@@ -204,27 +232,35 @@ TriangleMesh readPLY(const std::string& path)
   }
   if (!haveFormat) throw Error(path + ": PLY header has no format line");
 
-  std::vector<double> coords;
-  std::vector<int> faces;
-  long numVertices = 0;
+  PlyContents contents;
+  std::vector<double>& coords = contents.coords;
+  std::vector<int>& faces = contents.faces;
+  long& numVertices = contents.numVertices;
   bool haveVertices = false;
   Cursor cursor(path, data, bodyStart, format);
   for (const Element& e : elements)
   {
     const bool isVertex = e.name == "vertex", isFace = e.name == "face";
-    int xyz[3] = {-1, -1, -1};
+    int xyz[3], normal[3], colour[3];
+    findProperties(e, {"x", "y", "z"}, xyz);
+    findProperties(e, {"nx", "ny", "nz"}, normal);
+    findProperties(e, {"red", "green", "blue"}, colour);
+    const bool withNormals = isVertex && allFound(normal);
+    const bool withColours = isVertex && allFound(colour);
+    // Colours stored as floats are fractions of full intensity.
+    const double colourScale = withColours && (e.properties[colour[0]].type[0] == 'f' ||
+                                               e.properties[colour[0]].type[0] == 'd')
+                                   ? 255.0
+                                   : 1.0;
     int indexProperty = -1;
     for (size_t p = 0; p < e.properties.size(); ++p)
     {
       const auto& name = e.properties[p].name;
-      if (isVertex && name.size() == 1 && name[0] >= 'x' && name[0] <= 'z')
-        xyz[name[0] - 'x'] = static_cast<int>(p);
       if (isFace && (name == "vertex_indices" || name == "vertex_index") &&
           !e.properties[p].countType.empty())
         indexProperty = static_cast<int>(p);
     }
-    if (isVertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0))
-      throw Error(path + ": PLY vertex element lacks x, y or z");
+    if (isVertex && !allFound(xyz)) throw Error(path + ": PLY vertex element lacks x, y or z");
     if (isFace && indexProperty < 0)
       throw Error(path + ": PLY face element lacks a vertex_indices list");
     // An element without properties holds no data, whatever its count: nothing to read (a
@@ -239,19 +275,26 @@ TriangleMesh readPLY(const std::string& path)
       haveVertices = true;
       numVertices = e.count;
       coords.reserve(3 * e.count);
+      if (withNormals) contents.normals.reserve(3 * e.count);
+      if (withColours) contents.colours.reserve(3 * e.count);
     }
     std::vector<int> polygon;
     for (long i = 0; i < e.count; ++i)
     {
-      double point[3] = {0, 0, 0};
+      double point[3] = {0, 0, 0}, pointNormal[3] = {0, 0, 0}, pointColour[3] = {0, 0, 0};
       for (size_t p = 0; p < e.properties.size(); ++p)
       {
         const Property& prop = e.properties[p];
         if (prop.countType.empty())
         {
           const double value = cursor.read(prop.type);
-          for (int k = 0; k < 3; ++k)
-            if (isVertex && xyz[k] == static_cast<int>(p)) point[k] = value;
+          if (isVertex)
+            for (int k = 0; k < 3; ++k)
+            {
+              if (xyz[k] == static_cast<int>(p)) point[k] = value;
+              if (normal[k] == static_cast<int>(p)) pointNormal[k] = value;
+              if (colour[k] == static_cast<int>(p)) pointColour[k] = value * colourScale;
+            }
           continue;
         }
         const double n = cursor.read(prop.countType);
@@ -282,9 +325,29 @@ TriangleMesh readPLY(const std::string& path)
             faces.insert(faces.end(), {polygon[0], polygon[k], polygon[k + 1]});
         }
       }
-      if (isVertex) coords.insert(coords.end(), point, point + 3);
+      if (isVertex)
+      {
+        coords.insert(coords.end(), point, point + 3);
+        if (withNormals)
+          contents.normals.insert(contents.normals.end(), pointNormal, pointNormal + 3);
+        if (withColours)
+          contents.colours.insert(contents.colours.end(), pointColour, pointColour + 3);
+      }
     }
   }
-  return meshFromArrays(coords, faces);
+  return contents;
+}
+} // namespace
+
+TriangleMesh readPLY(const std::string& path)
+{
+  const PlyContents contents = readPLYContents(path);
+  return meshFromArrays(contents.coords, contents.faces);
+}
+
+PointCloud readPLYPoints(const std::string& path)
+{
+  const PlyContents contents = readPLYContents(path);
+  return cloudFromArrays(contents.coords, contents.normals, contents.colours);
 }
 } // namespace clothtrack

@@ -1,0 +1,138 @@
+#include "ReconstructRun.h"
+#include "CaptureOutput.h"
+#include "Progress.h"
+#include "TextFile.h"
+
+#include "ctPointCloudFile.h"
+
+#include <vtkPolyData.h>
+
+#include <clothtrack/base/Error.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+namespace clothtrack::app
+{
+namespace
+{
+nlohmann::json reportJson(const std::string& cloud, const ReconstructionReport& r, double seconds)
+{
+  return {{"cloud", cloud},
+          {"points", r.inputPoints},
+          {"invalid_points", r.invalidPoints},
+          {"outliers", r.cleaning.outliers},
+          {"thinned_points", r.cleaning.output},
+          {"given_normals", r.givenNormals},
+          {"normal_uncertain_share", r.normals.uncertainShare},
+          {"surface_variation", r.normals.medianSurfaceVariation},
+          {"poisson_faces", r.poissonFaces},
+          {"poisson_unpaired_edges", r.unpairedEdges},
+          {"vertices", r.vertices},
+          {"faces", r.faces},
+          {"pieces", r.pieces},
+          {"boundary_loops", r.boundaryLoops},
+          {"genus", r.genus},
+          {"mean_point_distance_m", r.meanPointDistance},
+          {"unexplained_share", r.unexplainedShare},
+          {"doubts", r.doubts},
+          {"seconds", seconds},
+          {"seconds_per_step",
+           {{"cleaning", r.cleaningSeconds},
+            {"normals", r.normalSeconds},
+            {"poisson", r.poissonSeconds},
+            {"crop", r.cropSeconds}}}};
+}
+
+bool upToDate(const std::string& mesh, const std::string& cloud)
+{
+  std::error_code ec;
+  return fs::exists(mesh, ec) && fs::last_write_time(mesh, ec) >= fs::last_write_time(cloud, ec);
+}
+} // namespace
+
+void addReconstructionOptions(po::options_description& options, ReconstructionOptions& values)
+{
+  options.add_options()("cloud-voxel", po::value(&values.cleaning.voxelSize)->default_value(0.005),
+                        "point clouds: voxel-grid thinning, metres (0 keeps every point)")(
+      "cloud-outlier-neighbours", po::value(&values.cleaning.outlierNeighbours)->default_value(16),
+      "point clouds: neighbours of the statistical outlier test (0: no test)")(
+      "cloud-outlier-deviations", po::value(&values.cleaning.outlierDeviations)->default_value(2.0),
+      "point clouds: a point whose neighbours lie this many deviations further than usual goes")(
+      "poisson-depth", po::value(&values.poisson.depth)->default_value(7),
+      "point clouds: Poisson octree depth (7: cells of about 1.5 cm for a person, about 11k "
+      "vertices)")("crop", po::value(&values.cropDistance)->default_value(0.02),
+                   "point clouds: surface further than this from every point is cut away, metres");
+}
+
+std::vector<std::string> reconstructSequence(const std::vector<std::string>& clouds,
+                                             const std::string& folder,
+                                             const ReconstructSettings& settings, long firstNumber)
+{
+  const ReconstructionOptions& o = settings.options;
+  if (!(o.cleaning.voxelSize >= 0 && o.cleaning.voxelSize <= 0.1))
+    throw UsageError{"--cloud-voxel must be between 0 and 0.1 metres"};
+  if (!(o.poisson.depth >= 5 && o.poisson.depth <= 12))
+    throw UsageError{"--poisson-depth must be between 5 and 12"};
+  if (!(o.cropDistance > 0 && o.cropDistance <= 0.5))
+    throw UsageError{"--crop must be in (0, 0.5] metres"};
+  fs::create_directories(fs::path(folder) / "frames");
+  std::vector<std::string> meshes;
+  nlohmann::json frames = nlohmann::json::array();
+  int doubtful = 0, reused = 0;
+  Progress progress("reconstruct", static_cast<int>(clouds.size()));
+  for (size_t k = 0; k < clouds.size(); ++k)
+  {
+    const std::string mesh =
+        (fs::path(folder) / "frames" / (frameStem(firstNumber + static_cast<long>(k)) + ".obj"))
+            .string();
+    if (upToDate(mesh, clouds[k]))
+    {
+      meshes.push_back(mesh);
+      ++reused;
+      progress.step(static_cast<int>(k + 1));
+      continue;
+    }
+    try
+    {
+      const auto start = std::chrono::steady_clock::now();
+      ReconstructionReport report;
+      const TriangleMesh surface = reconstructSurface(
+          loadPointCloud(clouds[k], settings.conventions), clouds[k], o, &report);
+      writeMeshFile(mesh, toPolyData(surface));
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      frames.push_back(reportJson(clouds[k], report, seconds));
+      meshes.push_back(mesh);
+      if (!report.doubts.empty())
+      {
+        ++doubtful;
+        std::fprintf(stderr, "\nwarning: %s: doubtful reconstruction: %s\n", clouds[k].c_str(),
+                     report.doubts.front().c_str());
+      }
+    }
+    catch (const Error& e)
+    {
+      if (!settings.skipBadFrames) throw;
+      std::fprintf(stderr, "\nwarning: %s (skipped)\n", e.what());
+      meshes.emplace_back();
+    }
+    progress.step(static_cast<int>(k + 1));
+  }
+  progress.finish();
+  if (std::all_of(meshes.begin(), meshes.end(), [](const std::string& m) { return m.empty(); }))
+    throw Error(folder + ": no cloud of the sequence could be reconstructed");
+  if (!frames.empty())
+    writeTextAtomically(
+        (fs::path(folder) / "reconstruction.json").string(),
+        nlohmann::json{{"frames", frames}, {"doubtful_frames", doubtful}, {"reused_frames", reused}}
+            .dump(1));
+  return meshes;
+}
+} // namespace clothtrack::app

@@ -1,0 +1,155 @@
+#include "SurfaceReconstruction.h"
+
+#include <clothtrack/base/Error.h>
+#include <clothtrack/io/PointCloudIO.h>
+#include <clothtrack/mesh/Components.h>
+#include <clothtrack/mesh/PointIndex.h>
+#include <clothtrack/mesh/SurfaceLocator.h>
+
+#include <chrono>
+#include <cstdio>
+
+namespace clothtrack
+{
+namespace
+{
+/// The faces whose `keep` flag is set, with the vertices they use renumbered.
+TriangleMesh keepFaces(const TriangleMesh& mesh, const std::vector<bool>& keep)
+{
+  std::vector<int> newIndex(mesh.numVertices(), -1);
+  std::vector<int> faces;
+  int used = 0;
+  for (int f = 0; f < mesh.numFaces(); ++f)
+  {
+    if (!keep[f]) continue;
+    for (int k = 0; k < 3; ++k)
+    {
+      int& index = newIndex[mesh.F(f, k)];
+      if (index < 0) index = used++;
+      faces.push_back(index);
+    }
+  }
+  TriangleMesh out;
+  out.V.resize(used, 3);
+  for (int v = 0; v < mesh.numVertices(); ++v)
+    if (newIndex[v] >= 0) out.V.row(newIndex[v]) = mesh.V.row(v);
+  out.F = Eigen::Map<const Triangles>(faces.data(), static_cast<long>(faces.size() / 3), 3);
+  return out;
+}
+
+/// Seconds since `start`, and `start` moved to now.
+double lap(std::chrono::steady_clock::time_point& start)
+{
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - start).count();
+  start = now;
+  return seconds;
+}
+
+std::string percent(double share)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f %%", 100 * share);
+  return text;
+}
+
+/// Topology and fit of the result, and the doubts they raise.
+void describeResult(const TriangleMesh& mesh, const Points& cleaned, ReconstructionReport& report)
+{
+  report.vertices = mesh.numVertices();
+  report.faces = mesh.numFaces();
+  const MeshTopology topology = buildTopology(mesh);
+  const Components components = connectedComponents(mesh, topology);
+  report.pieces = components.count();
+  report.boundaryLoops = static_cast<int>(boundaryLoops(mesh, topology).size());
+  report.genus = components.count() > 0 ? components.info[0].genus() : 0;
+  const SurfaceLocator surface(mesh);
+  const long stride = std::max<long>(1, cleaned.rows() / 20000);
+  long far = 0, counted = 0;
+  double sum = 0;
+  for (long i = 0; i < cleaned.rows(); i += stride, ++counted)
+  {
+    const SurfacePoint closest = surface.closestPoint(cleaned.row(i).transpose());
+    const double distance = closest.face >= 0 ? closest.distance : 1.0;
+    sum += distance;
+    far += distance > 0.01;
+  }
+  report.meanPointDistance = counted ? sum / counted : 0.0;
+  report.unexplainedShare = counted ? static_cast<double>(far) / counted : 1.0;
+  if (report.unexplainedShare > 0.05)
+    report.doubts.push_back(percent(report.unexplainedShare) +
+                            " of the points lie more than 1 cm from the surface");
+  // Legs seen below a skirt are pieces of their own (nothing is seen inside it), and so can be
+  // the skirt, cut from the waist where it meets the body in a crease; a result whose largest
+  // piece is less than 30 % of it is in fragments.
+  if (report.pieces > 1 && components.info[0].numFaces < 0.3 * report.faces)
+    report.doubts.push_back(
+        "the surface is in " + std::to_string(report.pieces) + " pieces, the largest holding " +
+        percent(static_cast<double>(components.info[0].numFaces) / report.faces) + " of it");
+  if (report.normals.uncertainShare > 0.05)
+    report.doubts.push_back("normals turn sharply between neighbours for " +
+                            percent(report.normals.uncertainShare) +
+                            " of the points (parts closer than the point spacing?)");
+}
+} // namespace
+
+TriangleMesh cropToPoints(const TriangleMesh& mesh, const Points& points, double distance,
+                          double minimumPieceShare)
+{
+  const PointIndex index(points);
+  std::vector<bool> near(mesh.numVertices());
+#pragma omp parallel for schedule(static)
+  for (int v = 0; v < mesh.numVertices(); ++v)
+    near[v] = index.nearest(mesh.vertex(v)).distance <= distance;
+  std::vector<bool> keep(mesh.numFaces());
+  for (int f = 0; f < mesh.numFaces(); ++f)
+    keep[f] = near[mesh.F(f, 0)] && near[mesh.F(f, 1)] && near[mesh.F(f, 2)];
+  TriangleMesh cropped = keepFaces(mesh, keep);
+  if (cropped.numFaces() == 0) return cropped;
+  const MeshTopology topology = buildTopology(cropped);
+  const Components components = connectedComponents(cropped, topology);
+  std::vector<bool> large(cropped.numFaces());
+  for (int f = 0; f < cropped.numFaces(); ++f)
+    large[f] =
+        components.info[components.faceLabel[f]].numFaces >= minimumPieceShare * cropped.numFaces();
+  return keepFaces(cropped, large);
+}
+
+TriangleMesh reconstructSurface(const PointCloud& input, const std::string& name,
+                                const ReconstructionOptions& options, ReconstructionReport* out)
+{
+  ReconstructionReport report;
+  auto clock = std::chrono::steady_clock::now();
+  PointCloud cloud = input;
+  report.inputPoints = input.size();
+  report.invalidPoints = dropInvalidPoints(cloud, name, options.minimumPoints);
+  cloud = cleanCloud(cloud, options.cleaning, &report.cleaning);
+  if (cloud.size() < options.minimumPoints)
+    throw Error(name + ": only " + std::to_string(cloud.size()) + " of the " +
+                std::to_string(report.inputPoints) +
+                " points are left after outlier removal and thinning, too few for a surface");
+  report.cleaningSeconds = lap(clock);
+  report.givenNormals = cloud.hasNormals();
+  PointCloud oriented = cloud;
+  estimateNormals(oriented, options.normals, &report.normals);
+  if (report.givenNormals) oriented.N = cloud.N;
+  // A surface's neighbourhoods are flat (variation near 0); points filling a volume give 1/3.
+  if (report.normals.medianSurfaceVariation > 0.15)
+    throw Error(name + ": the points do not lie on a surface (median surface variation " +
+                std::to_string(report.normals.medianSurfaceVariation) +
+                ", a surface gives under 0.05): is this a capture of a person, or noise?");
+  report.normalSeconds = lap(clock);
+  const TriangleMesh closed = poissonSurface(oriented, options.poisson, &report.unpairedEdges);
+  report.poissonVertices = closed.numVertices();
+  report.poissonFaces = closed.numFaces();
+  report.poissonSeconds = lap(clock);
+  TriangleMesh mesh =
+      cropToPoints(closed, cloud.P, options.cropDistance, options.minimumPieceShare);
+  if (mesh.numFaces() == 0)
+    throw Error(name + ": the reconstructed surface lies nowhere near the points");
+  describeResult(mesh, cloud.P, report);
+  report.cropSeconds = lap(clock);
+  if (out) *out = report;
+  return mesh;
+}
+} // namespace clothtrack
