@@ -2,10 +2,12 @@
 
 #include "ctArrayNames.h"
 #include "ctMeshConversion.h"
+#include "ctPointCloudFile.h"
 #include "ctRequestedPortOnly.h"
 
 #include <clothtrack/base/Error.h>
 #include <clothtrack/io/FrameList.h>
+#include <clothtrack/io/PointCloudIO.h>
 
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -109,10 +111,20 @@ bool ctMeshSequenceReader::ReadFrameInto(int index, vtkPolyData* output)
                             : this->LengthUnit == CENTIMETRES ? 1e-2
                                                               : 1.0;
     conventions.upAxis = this->UpAxis;
-    std::vector<std::string> warnings;
-    const clothtrack::TriangleMesh mesh = clothtrack::loadFrame(path, conventions, &warnings);
-    for (const auto& warning : warnings) vtkWarningMacro(<< warning);
-    output->ShallowCopy(clothtrack::toPolyData(mesh));
+    if (clothtrack::isPointCloudPath(path))
+    {
+      clothtrack::PointCloud cloud = clothtrack::loadPointCloud(path, conventions);
+      if (const int dropped = clothtrack::dropInvalidPoints(cloud, path, 1))
+        vtkWarningMacro(<< path << ": " << dropped << " points with NaN coordinates left out");
+      output->ShallowCopy(clothtrack::toPolyData(cloud));
+    }
+    else
+    {
+      std::vector<std::string> warnings;
+      const clothtrack::TriangleMesh mesh = clothtrack::loadFrame(path, conventions, &warnings);
+      for (const auto& warning : warnings) vtkWarningMacro(<< warning);
+      output->ShallowCopy(clothtrack::toPolyData(mesh));
+    }
   }
   catch (const clothtrack::Error& e)
   {

@@ -2,8 +2,10 @@
  * @class ctMeshSequenceReader
  * @brief Reads a captured mesh sequence: one independent mesh file per frame.
  *
- * FileName is a folder (every .obj .ply .stl .off .vtp .vtk file in it), a glob pattern
- * (`frames/mesh_*.obj`), a text file listing one frame per line, or a single mesh file. Frames
+ * FileName is a folder (every .obj .ply .stl .off .vtp .vtk .pcd .xyz file in it), a glob
+ * pattern (`frames/mesh_*.obj`), a text file listing one frame per line, or a single mesh file.
+ * Point clouds (.pcd, .xyz, and .ply without faces) are read as points with one vertex cell
+ * each, their "Normals" and "Colors" kept (.pcd through PCL, not inside ParaView). Frames
  * from a folder or pattern are sorted by the numbers in their names (natural order).
  *
  * Output port 0 is the current frame as vtkPolyData. It is temporal: frame k has time

@@ -116,8 +116,13 @@ TriangleMesh cropToPoints(const TriangleMesh& mesh, const Points& points, double
 }
 
 TriangleMesh reconstructSurface(const PointCloud& input, const std::string& name,
-                                const ReconstructionOptions& options, ReconstructionReport* out)
+                                const ReconstructionOptions& options, ReconstructionReport* out,
+                                const std::function<void(double)>& progress)
 {
+  auto done = [&](double share)
+  {
+    if (progress) progress(share);
+  };
   ReconstructionReport report;
   auto clock = std::chrono::steady_clock::now();
   PointCloud cloud = input;
@@ -129,6 +134,7 @@ TriangleMesh reconstructSurface(const PointCloud& input, const std::string& name
                 std::to_string(report.inputPoints) +
                 " points are left after outlier removal and thinning, too few for a surface");
   report.cleaningSeconds = lap(clock);
+  done(0.15);
   report.givenNormals = cloud.hasNormals();
   PointCloud oriented = cloud;
   estimateNormals(oriented, options.normals, &report.normals);
@@ -139,16 +145,19 @@ TriangleMesh reconstructSurface(const PointCloud& input, const std::string& name
                 std::to_string(report.normals.medianSurfaceVariation) +
                 ", a surface gives under 0.05): is this a capture of a person, or noise?");
   report.normalSeconds = lap(clock);
+  done(0.35);
   const TriangleMesh closed = poissonSurface(oriented, options.poisson, &report.unpairedEdges);
   report.poissonVertices = closed.numVertices();
   report.poissonFaces = closed.numFaces();
   report.poissonSeconds = lap(clock);
+  done(0.9);
   TriangleMesh mesh =
       cropToPoints(closed, cloud.P, options.cropDistance, options.minimumPieceShare);
   if (mesh.numFaces() == 0)
     throw Error(name + ": the reconstructed surface lies nowhere near the points");
   describeResult(mesh, cloud.P, report);
   report.cropSeconds = lap(clock);
+  done(1.0);
   if (out) *out = report;
   return mesh;
 }

@@ -7,6 +7,7 @@
 #include <clothtrack/cloud/CloudNormals.h>
 #include <clothtrack/reconstruction/PoissonSurface.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,10 +50,12 @@ struct ReconstructionReport
 };
 
 /// The cropped Poisson surface of `cloud`. Throws Error naming `name` for a cloud that cannot
-/// be a surface (empty, all NaN, too few points, points that fill a volume).
+/// be a surface (empty, all NaN, too few points, points that fill a volume). `progress`
+/// (optional) is told the share done after each step.
 TriangleMesh reconstructSurface(const PointCloud& cloud, const std::string& name,
                                 const ReconstructionOptions& options = {},
-                                ReconstructionReport* report = nullptr);
+                                ReconstructionReport* report = nullptr,
+                                const std::function<void(double)>& progress = {});
 
 /// The faces of `mesh` whose three corners lie within `distance` of some point, without pieces
 /// smaller than `minimumPieceShare` of them; unused vertices removed.
