@@ -48,7 +48,11 @@ int ctSurfaceReconstruction::RequestData(vtkInformation*, vtkInformationVector**
     const clothtrack::TriangleMesh mesh = clothtrack::reconstructSurface(
         clothtrack::toPointCloud(input, "surface reconstruction input"),
         "surface reconstruction input", options, &report,
-        [this](double share) { this->UpdateProgress(share); });
+        [this](double share)
+        {
+          this->UpdateProgress(share);
+          return !this->GetAbortExecute();
+        });
     output->ShallowCopy(clothtrack::toPolyData(mesh));
     output->GetFieldData()->PassData(input->GetFieldData());
     addField<vtkIntArray>(output, "ReconstructionPieces", report.pieces);

@@ -186,6 +186,10 @@ TriangleMesh readMeshFileUnguarded(const std::string& path)
   }
   else if (ext == ".vtk") // VTK's legacy reader trusts the declared counts and the version line
     return readLegacyVTK(path);
+  else if (ext == ".xyz" || ext == ".pcd")
+    throw Error(path +
+                ": a point cloud, not a mesh: reconstruct it first ('clothtrack reconstruct'; "
+                "'clothtrack align' does it by itself)");
   else
     throw Error(path + ": unsupported file type '" + ext + "' (use .obj .ply .stl .off .vtp .vtk)");
   return toTriangleMesh(data, path);

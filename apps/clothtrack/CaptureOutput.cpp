@@ -20,9 +20,11 @@ std::string frameStem(long k)
   return name;
 }
 
-void makeOutputFolders(const std::string& output, std::initializer_list<const char*> extra)
+void makeOutputFolders(const std::string& output, std::initializer_list<const char*> extra,
+                       bool withSourceMap)
 {
-  std::vector<const char*> folders = {"frames", "source_map"};
+  std::vector<const char*> folders = {"frames"};
+  if (withSourceMap) folders.push_back("source_map");
   folders.insert(folders.end(), extra.begin(), extra.end());
   for (const char* sub : folders)
   {

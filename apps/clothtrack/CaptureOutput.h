@@ -12,7 +12,9 @@ namespace clothtrack::app
 std::string frameStem(long k);
 
 /// Creates OUT/frames and OUT/source_map (and any extra sub-folders); UsageError on failure.
-void makeOutputFolders(const std::string& output, std::initializer_list<const char*> extra = {});
+/// Point clouds have no source map (`withSourceMap` false).
+void makeOutputFolders(const std::string& output, std::initializer_list<const char*> extra = {},
+                       bool withSourceMap = true);
 
 /// Simulates the capture of `truth` for frame k and writes both files (atomically).
 void captureAndWrite(const std::string& output, long k, const TriangleMesh& truth,

@@ -120,7 +120,7 @@ int runSimulateCapture(const Args& args)
   cloud.rig.noise = capture.noise;
 
   const std::vector<std::string> frames = listFrames(input);
-  makeOutputFolders(output);
+  makeOutputFolders(output, {}, !cloud.enabled);
   std::mt19937 dropRng(static_cast<unsigned>(seed));
   std::uniform_real_distribution<double> uniform(0, 1);
   Progress progress("simulate-capture", static_cast<int>(frames.size()));

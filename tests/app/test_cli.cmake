@@ -43,8 +43,11 @@ expect_run(1 "plain_file/work: Not a directory" align ${WORK}/seq -o ${WORK}/pla
 file(MAKE_DIRECTORY ${WORK}/loops)
 file(CREATE_LINK loop ${WORK}/loops/loop SYMBOLIC)
 expect_run(1 "loop: Too many levels of symbolic links" inspect ${WORK}/loops)
-file(WRITE ${WORK}/odd/mesh.xyz "0 0 0\n")
-expect_run(1 "mesh.xyz:1: '0 0 0' is not a supported mesh file" inspect ${WORK}/odd/mesh.xyz)
+file(WRITE ${WORK}/odd/mesh.las "0 0 0\n")
+expect_run(1 "mesh.las:1: '0 0 0' is not a supported mesh file" inspect ${WORK}/odd/mesh.las)
+file(WRITE ${WORK}/odd/cloud.xyz "0 0 0\n")
+expect_run(1 "cloud.xyz: a point cloud, not a mesh: reconstruct it first" inspect ${WORK}/odd/cloud.xyz)
+
 # VTK's XML parser and executive printed their own blocks of lines before the error: now the
 # whole of stderr is the one line.
 file(WRITE ${WORK}/xml/t_0.vtp "<VTKFile type=\"PolyData\"><PolyData><Piece>")

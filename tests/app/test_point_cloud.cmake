@@ -58,3 +58,10 @@ expect_run(1 "noise.xyz: the points do not lie on a surface" reconstruct ${WORK}
 file(COPY ${WORK}/synth/frames/frame_0000.obj DESTINATION ${WORK}/bad/mixed)
 file(COPY ${WORK}/clouds/frames/frame_0001.pcd DESTINATION ${WORK}/bad/mixed)
 expect_run(1 "frame_0000.obj: not a point cloud" reconstruct ${WORK}/bad/mixed -o ${WORK}/bad/out)
+# Options out of range.
+expect_run(1 "--cameras must be between 1 and 64" simulate-capture ${WORK}/synth/ground_truth
+  -o ${WORK}/bad/sim --point-cloud --cameras 0)
+expect_run(1 "--cloud-format must be pcd, ply or xyz" simulate-capture ${WORK}/synth/ground_truth
+  -o ${WORK}/bad/sim --point-cloud --cloud-format las)
+expect_run(1 "--poisson-depth must be between 5 and 12" reconstruct ${WORK}/clouds/frames
+  -o ${WORK}/bad/out --poisson-depth 20)

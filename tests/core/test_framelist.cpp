@@ -52,6 +52,6 @@ TEST(FrameList, ClearErrors)
   EXPECT_THROW(listFrames(dir), Error); // empty folder
   EXPECT_THROW(listFrames(dir + "/*.obj"), Error);
   EXPECT_THROW(listFrames(""), Error);
-  const std::string list = writeText(dir + "/list.txt", "frame.xyz\n");
+  const std::string list = writeText(dir + "/list.txt", "frame.las\n");
   EXPECT_THROW(listFrames(list), Error);
 }

@@ -117,11 +117,11 @@ TriangleMesh cropToPoints(const TriangleMesh& mesh, const Points& points, double
 
 TriangleMesh reconstructSurface(const PointCloud& input, const std::string& name,
                                 const ReconstructionOptions& options, ReconstructionReport* out,
-                                const std::function<void(double)>& progress)
+                                const StageProgress& progress)
 {
   auto done = [&](double share)
   {
-    if (progress) progress(share);
+    if (progress && !progress(share)) throw Error(name + ": reconstruction cancelled");
   };
   ReconstructionReport report;
   auto clock = std::chrono::steady_clock::now();

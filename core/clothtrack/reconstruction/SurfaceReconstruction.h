@@ -3,11 +3,11 @@
 // removed, density evened, normals estimated and oriented, a watertight Poisson surface, then
 // cropped to where the points are, so that no skin is invented far from any point (the soles,
 // the top of the head a camera did not see). The report says how sure the result is.
+#include <clothtrack/base/Progress.h>
 #include <clothtrack/cloud/CloudCleaning.h>
 #include <clothtrack/cloud/CloudNormals.h>
 #include <clothtrack/reconstruction/PoissonSurface.h>
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,12 +50,12 @@ struct ReconstructionReport
 };
 
 /// The cropped Poisson surface of `cloud`. Throws Error naming `name` for a cloud that cannot
-/// be a surface (empty, all NaN, too few points, points that fill a volume). `progress`
-/// (optional) is told the share done after each step.
+/// be a surface (empty, all NaN, too few points, points that fill a volume). `progress` is
+/// told the share done after each step; returning false cancels (Error).
 TriangleMesh reconstructSurface(const PointCloud& cloud, const std::string& name,
                                 const ReconstructionOptions& options = {},
                                 ReconstructionReport* report = nullptr,
-                                const std::function<void(double)>& progress = {});
+                                const StageProgress& progress = {});
 
 /// The faces of `mesh` whose three corners lie within `distance` of some point, without pieces
 /// smaller than `minimumPieceShare` of them; unused vertices removed.
