@@ -15,6 +15,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
 
 namespace fs = std::filesystem;
 
@@ -36,6 +38,7 @@ nlohmann::json reportJson(const std::string& cloud, const ReconstructionReport& 
           {"poisson_unpaired_edges", r.unpairedEdges},
           {"vertices", r.vertices},
           {"faces", r.faces},
+          {"repaired_vertices", r.repairedVertices},
           {"pieces", r.pieces},
           {"boundary_loops", r.boundaryLoops},
           {"genus", r.genus},
@@ -54,6 +57,51 @@ bool upToDate(const std::string& mesh, const std::string& cloud)
 {
   std::error_code ec;
   return fs::exists(mesh, ec) && fs::last_write_time(mesh, ec) >= fs::last_write_time(cloud, ec);
+}
+
+/// Everything that decides a reconstructed mesh: meshes made with other options are redone.
+nlohmann::json optionsKey(const ReconstructSettings& settings)
+{
+  const ReconstructionOptions& o = settings.options;
+  return {{"cleaning",
+           {o.cleaning.outlierNeighbours, o.cleaning.outlierDeviations, o.cleaning.voxelSize}},
+          {"normals", {o.normals.neighbours, o.normals.orientationNeighbours}},
+          {"poisson", {o.poisson.depth, o.poisson.samplesPerNode}},
+          {"crop", {o.cropDistance, o.minimumPieceShare, o.minimumPoints}},
+          {"conventions", {settings.conventions.unitScale, settings.conventions.upAxis}}};
+}
+
+/// The records of an earlier run into `folder` with the same options, by cloud file.
+std::map<std::string, nlohmann::json> earlierRecords(const std::string& folder,
+                                                     const nlohmann::json& key)
+{
+  std::map<std::string, nlohmann::json> records;
+  std::ifstream in(fs::path(folder) / "reconstruction.json");
+  const nlohmann::json earlier = nlohmann::json::parse(in, nullptr, false);
+  if (earlier.is_discarded() || !earlier.contains("options") || earlier["options"] != key ||
+      !earlier.contains("frames") || !earlier["frames"].is_array())
+    return records;
+  for (const auto& record : earlier["frames"])
+    if (record.contains("cloud") && record["cloud"].is_string())
+      records[record["cloud"].get<std::string>()] = record;
+  return records;
+}
+
+/// Reconstructs one cloud into `mesh`; its record for reconstruction.json.
+nlohmann::json reconstructOne(const std::string& cloud, const std::string& mesh,
+                              const ReconstructSettings& settings)
+{
+  const auto start = std::chrono::steady_clock::now();
+  ReconstructionReport report;
+  const TriangleMesh surface = reconstructSurface(loadPointCloud(cloud, settings.conventions),
+                                                  cloud, settings.options, &report);
+  writeMeshFile(mesh, toPolyData(surface));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const std::string& doubt : report.doubts)
+    std::fprintf(stderr, "\nwarning: %s: doubtful reconstruction: %s\n", cloud.c_str(),
+                 doubt.c_str());
+  return reportJson(cloud, report, seconds);
 }
 } // namespace
 
@@ -83,6 +131,8 @@ std::vector<std::string> reconstructSequence(const std::vector<std::string>& clo
   if (!(o.cropDistance > 0 && o.cropDistance <= 0.5))
     throw UsageError{"--crop must be in (0, 0.5] metres"};
   fs::create_directories(fs::path(folder) / "frames");
+  const nlohmann::json key = optionsKey(settings);
+  std::map<std::string, nlohmann::json> records = earlierRecords(folder, key);
   std::vector<std::string> meshes;
   nlohmann::json frames = nlohmann::json::array();
   int doubtful = 0, reused = 0;
@@ -92,47 +142,38 @@ std::vector<std::string> reconstructSequence(const std::vector<std::string>& clo
     const std::string mesh =
         (fs::path(folder) / "frames" / (frameStem(firstNumber + static_cast<long>(k)) + ".obj"))
             .string();
-    if (upToDate(mesh, clouds[k]))
+    nlohmann::json record;
+    if (records.count(clouds[k]) && upToDate(mesh, clouds[k]))
     {
-      meshes.push_back(mesh);
+      record = records[clouds[k]];
       ++reused;
-      progress.step(static_cast<int>(k + 1));
-      continue;
     }
-    try
-    {
-      const auto start = std::chrono::steady_clock::now();
-      ReconstructionReport report;
-      const TriangleMesh surface = reconstructSurface(
-          loadPointCloud(clouds[k], settings.conventions), clouds[k], o, &report);
-      writeMeshFile(mesh, toPolyData(surface));
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      frames.push_back(reportJson(clouds[k], report, seconds));
-      meshes.push_back(mesh);
-      if (!report.doubts.empty())
+    else
+      try
       {
-        ++doubtful;
-        std::fprintf(stderr, "\nwarning: %s: doubtful reconstruction: %s\n", clouds[k].c_str(),
-                     report.doubts.front().c_str());
+        record = reconstructOne(clouds[k], mesh, settings);
       }
-    }
-    catch (const Error& e)
+      catch (const Error& e)
+      {
+        if (!settings.skipBadFrames) throw;
+        std::fprintf(stderr, "\nwarning: %s (skipped)\n", e.what());
+      }
+    meshes.push_back(record.is_null() ? std::string() : mesh);
+    if (!record.is_null())
     {
-      if (!settings.skipBadFrames) throw;
-      std::fprintf(stderr, "\nwarning: %s (skipped)\n", e.what());
-      meshes.emplace_back();
+      doubtful += !record.value("doubts", nlohmann::json::array()).empty();
+      frames.push_back(record);
     }
     progress.step(static_cast<int>(k + 1));
   }
   progress.finish();
-  if (std::all_of(meshes.begin(), meshes.end(), [](const std::string& m) { return m.empty(); }))
-    throw Error(folder + ": no cloud of the sequence could be reconstructed");
-  if (!frames.empty())
-    writeTextAtomically(
-        (fs::path(folder) / "reconstruction.json").string(),
-        nlohmann::json{{"frames", frames}, {"doubtful_frames", doubtful}, {"reused_frames", reused}}
-            .dump(1));
+  if (frames.empty()) throw Error(folder + ": no cloud of the sequence could be reconstructed");
+  writeTextAtomically((fs::path(folder) / "reconstruction.json").string(),
+                      nlohmann::json{{"options", key},
+                                     {"frames", frames},
+                                     {"doubtful_frames", doubtful},
+                                     {"reused_frames", reused}}
+                          .dump(1));
   return meshes;
 }
 } // namespace clothtrack::app

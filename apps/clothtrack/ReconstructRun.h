@@ -22,7 +22,8 @@ struct ReconstructSettings
 
 /// Reconstructs every cloud in order, with a progress line, and returns the mesh file of each
 /// (frame_NNNN numbered from `firstNumber`; "" for a cloud skipped with skipBadFrames). A frame
-/// whose mesh already exists, newer than its cloud, is not reconstructed again.
+/// whose mesh exists, newer than its cloud and made with the same options (as reconstruction.json
+/// records them), is not reconstructed again.
 std::vector<std::string> reconstructSequence(const std::vector<std::string>& clouds,
                                              const std::string& folder,
                                              const ReconstructSettings& settings,

@@ -20,6 +20,21 @@ if (NOT doubtful EQUAL 0 OR pieces GREATER 4 OR vertices LESS 3000 OR distance G
                       "${vertices} vertices, ${distance} m")
 endif ()
 
+# A second run reuses every mesh; other options redo them.
+expect_run(0 "wrote 5 reconstructed frames" reconstruct ${WORK}/clouds/frames -o ${WORK}/rec)
+file(READ ${WORK}/rec/reconstruction.json report)
+string(JSON reused GET "${report}" reused_frames)
+string(JSON recorded LENGTH "${report}" frames)
+if (NOT reused EQUAL 5 OR NOT recorded EQUAL 5)
+  message(FATAL_ERROR "second reconstruct: ${reused} frames reused, ${recorded} recorded (expected 5, 5)")
+endif ()
+expect_run(0 "wrote 5 reconstructed frames" reconstruct ${WORK}/clouds/frames -o ${WORK}/rec --poisson-depth 6)
+file(READ ${WORK}/rec/reconstruction.json report)
+string(JSON reused GET "${report}" reused_frames)
+if (NOT reused EQUAL 0)
+  message(FATAL_ERROR "reconstruct with another depth reused ${reused} frames")
+endif ()
+
 # align takes the clouds as they are: reconstructed into OUT/reconstructed first.
 expect_run(0 "aligned 5 frames" align ${WORK}/clouds/frames --ground-truth ${WORK}/synth/ground_truth
   -o ${WORK}/out --no-report)

@@ -3,6 +3,7 @@
 #include <clothtrack/base/Error.h>
 #include <clothtrack/io/PointCloudIO.h>
 #include <clothtrack/mesh/Components.h>
+#include <clothtrack/mesh/MeshValidation.h>
 #include <clothtrack/mesh/PointIndex.h>
 #include <clothtrack/mesh/SurfaceLocator.h>
 
@@ -155,6 +156,10 @@ TriangleMesh reconstructSurface(const PointCloud& input, const std::string& name
       cropToPoints(closed, cloud.P, options.cropDistance, options.minimumPieceShare);
   if (mesh.numFaces() == 0)
     throw Error(name + ": the reconstructed surface lies nowhere near the points");
+  // The crop can leave two fans of faces on one vertex (a bow tie) and slivers; repaired here
+  // rather than warned about on every frame the pipeline reads.
+  const CleaningReport repairs = validateAndClean(mesh, name);
+  report.repairedVertices = repairs.bowTieVerticesSplit + repairs.mergedVertices;
   describeResult(mesh, cloud.P, report);
   report.cropSeconds = lap(clock);
   done(1.0);

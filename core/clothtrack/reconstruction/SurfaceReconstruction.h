@@ -36,6 +36,7 @@ struct ReconstructionReport
   int poissonVertices = 0, poissonFaces = 0;
   int unpairedEdges = 0; ///< iso-surface edges Poisson left open
   int vertices = 0, faces = 0;
+  int repairedVertices = 0; ///< bow-tie vertices split and duplicates merged after the crop
   int pieces = 0;        ///< connected components of the result
   int boundaryLoops = 0; ///< holes opened by the crop (and the capture)
   int genus = 0;         ///< of the largest piece
