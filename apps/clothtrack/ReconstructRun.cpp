@@ -38,6 +38,7 @@ nlohmann::json reportJson(const std::string& cloud, const ReconstructionReport& 
           {"poisson_unpaired_edges", r.unpairedEdges},
           {"vertices", r.vertices},
           {"faces", r.faces},
+          {"dropped_fan_faces", r.droppedFanFaces},
           {"repaired_vertices", r.repairedVertices},
           {"pieces", r.pieces},
           {"boundary_loops", r.boundaryLoops},

@@ -7,6 +7,7 @@
 #include <clothtrack/mesh/PointIndex.h>
 #include <clothtrack/mesh/SurfaceLocator.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -36,6 +37,68 @@ TriangleMesh keepFaces(const TriangleMesh& mesh, const std::vector<bool>& keep)
     if (newIndex[v] >= 0) out.V.row(newIndex[v]) = mesh.V.row(v);
   out.F = Eigen::Map<const Triangles>(faces.data(), static_cast<long>(faces.size() / 3), 3);
   return out;
+}
+
+/// Faces of the smaller fans at each bow-tie vertex (a vertex whose faces form several fans, as
+/// the crop leaves where it cuts across a thin part). Splitting such a vertex would put two
+/// vertices at one place, which every reader merges again; the small fans are dropped instead.
+/// Returns the number of faces dropped.
+int dropSmallFans(TriangleMesh& mesh)
+{
+  int dropped = 0;
+  for (int round = 0; round < 5; ++round)
+  {
+    const MeshTopology topology = buildTopology(mesh);
+    std::vector<bool> keep(mesh.numFaces(), true);
+    bool changed = false;
+    for (int v = 0; v < mesh.numVertices(); ++v)
+    {
+      const std::vector<int> faces(topology.vertexFaces.begin(v), topology.vertexFaces.end(v));
+      if (faces.size() < 2) continue;
+      // Fans: faces around v joined when they share a second vertex (an edge through v).
+      std::vector<int> fan(faces.size(), -1);
+      int fans = 0;
+      for (size_t seed = 0; seed < faces.size(); ++seed)
+      {
+        if (fan[seed] >= 0) continue;
+        std::vector<size_t> stack = {seed};
+        fan[seed] = fans;
+        while (!stack.empty())
+        {
+          const size_t a = stack.back();
+          stack.pop_back();
+          for (size_t b = 0; b < faces.size(); ++b)
+          {
+            if (fan[b] >= 0) continue;
+            int shared = 0;
+            for (int i = 0; i < 3; ++i)
+              for (int j = 0; j < 3; ++j) shared += mesh.F(faces[a], i) == mesh.F(faces[b], j);
+            if (shared >= 2)
+            {
+              fan[b] = fans;
+              stack.push_back(b);
+            }
+          }
+        }
+        ++fans;
+      }
+      if (fans < 2) continue;
+      std::vector<int> size(fans, 0);
+      for (const int f : fan) ++size[f];
+      const int largest =
+          static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
+      for (size_t i = 0; i < faces.size(); ++i)
+        if (fan[i] != largest && keep[faces[i]])
+        {
+          keep[faces[i]] = false;
+          ++dropped;
+          changed = true;
+        }
+    }
+    if (!changed) break;
+    mesh = keepFaces(mesh, keep);
+  }
+  return dropped;
 }
 
 /// Seconds since `start`, and `start` moved to now.
@@ -158,6 +221,7 @@ TriangleMesh reconstructSurface(const PointCloud& input, const std::string& name
     throw Error(name + ": the reconstructed surface lies nowhere near the points");
   // The crop can leave two fans of faces on one vertex (a bow tie) and slivers; repaired here
   // rather than warned about on every frame the pipeline reads.
+  report.droppedFanFaces = dropSmallFans(mesh);
   const CleaningReport repairs = validateAndClean(mesh, name);
   report.repairedVertices = repairs.bowTieVerticesSplit + repairs.mergedVertices;
   describeResult(mesh, cloud.P, report);

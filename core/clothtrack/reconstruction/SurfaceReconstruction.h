@@ -36,10 +36,11 @@ struct ReconstructionReport
   int poissonVertices = 0, poissonFaces = 0;
   int unpairedEdges = 0; ///< iso-surface edges Poisson left open
   int vertices = 0, faces = 0;
-  int repairedVertices = 0; ///< bow-tie vertices split and duplicates merged after the crop
-  int pieces = 0;        ///< connected components of the result
-  int boundaryLoops = 0; ///< holes opened by the crop (and the capture)
-  int genus = 0;         ///< of the largest piece
+  int droppedFanFaces = 0;  ///< faces of the smaller fans at bow-tie vertices the crop left
+  int repairedVertices = 0; ///< bow-tie vertices split and duplicates merged after that
+  int pieces = 0;           ///< connected components of the result
+  int boundaryLoops = 0;    ///< holes opened by the crop (and the capture)
+  int genus = 0;            ///< of the largest piece
   /// Share of the cleaned points further than 1 cm from the result.
   double unexplainedShare = 0;
   /// Mean distance of the cleaned points to the result, metres.
