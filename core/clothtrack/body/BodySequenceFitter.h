@@ -454,7 +454,17 @@ public:
     measure(frame, other);
     if ((!coverAsMuch || other.frameDistance <= fit.frameDistance) &&
         twoSidedScore(frame, other.pose) < twoSidedScore(frame, fit.pose))
-      adopt(frame, other, fit);
+    {
+      // Measured already: taken with its measures rather than measured again.
+      fit.pose = other.pose;
+      fit.energy = other.energy;
+      fit.extremitiesMatched = other.extremitiesMatched;
+      fit.medianDistance = other.medianDistance;
+      fit.insideFraction = other.insideFraction;
+      fit.frameDistance = other.frameDistance;
+      fit.status = other.status;
+      fit.message = other.message;
+    }
   }
 
   /// A frame that no neighbour vouches for, started again from the poses of frames already
