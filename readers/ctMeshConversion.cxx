@@ -4,6 +4,7 @@
 #include "ctVtkMessageCapture.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/io/FileBytes.h>
 #include <clothtrack/io/FrameList.h>
 #include <clothtrack/io/MeshIO.h>
 #include <clothtrack/io/ReaderPrechecks.h>
@@ -164,10 +165,7 @@ namespace
 {
 TriangleMesh readMeshFileUnguarded(const std::string& path)
 {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw Error(path + ": no such file");
-  if (!fs::is_regular_file(path, ec)) throw Error(path + ": not a regular file");
-  if (fs::file_size(path, ec) == 0) throw Error(path + ": empty file");
+  requireNonEmptyFile(path);
   const std::string ext = lowerCaseExtension(path);
   if (ext == ".obj") return readOBJ(path);
   if (ext == ".off") return readOFF(path);

@@ -111,7 +111,7 @@ bool ctMeshSequenceReader::ReadFrameInto(int index, vtkPolyData* output)
                             : this->LengthUnit == CENTIMETRES ? 1e-2
                                                               : 1.0;
     conventions.upAxis = this->UpAxis;
-    if (clothtrack::isPointCloudPath(path))
+    if (clothtrack::isPointCloudFile(path))
     {
       clothtrack::PointCloud cloud = clothtrack::loadPointCloud(path, conventions);
       if (const int dropped = clothtrack::dropInvalidPoints(cloud, path, 1))

@@ -1,6 +1,7 @@
 #include "ctPointCloudFile.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/io/FileBytes.h>
 #include <clothtrack/io/FrameList.h>
 #include <clothtrack/io/PointCloudIO.h>
 #ifdef CLOTHTRACK_HAVE_PCD
@@ -34,16 +35,9 @@ namespace
 } // namespace
 #endif
 
-bool isPointCloudPath(const std::string& path)
-{
-  return isPointCloudFile(path);
-}
-
 PointCloud readPointCloudFile(const std::string& path)
 {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw Error(path + ": no such file");
-  if (fs::file_size(path, ec) == 0) throw Error(path + ": empty file");
+  requireNonEmptyFile(path);
   const std::string ext = lowerCaseExtension(path);
   try
   {

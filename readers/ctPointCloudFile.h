@@ -5,15 +5,13 @@
 #include "ctMeshConversion.h"
 #include "ctReadersModule.h"
 
+#include <clothtrack/io/PointCloudIO.h> // isPointCloudFile
 #include <clothtrack/mesh/PointCloud.h>
 
 #include <string>
 
 namespace clothtrack
 {
-/// True for .xyz and .pcd files, and for .ply files whose header declares no faces.
-CTREADERS_EXPORT bool isPointCloudPath(const std::string& path);
-
 /// The points of a cloud file, unit and up axis not yet applied. Throws Error naming the file.
 CTREADERS_EXPORT PointCloud readPointCloudFile(const std::string& path);
 

@@ -10,12 +10,10 @@ CLOUD is a .pcd, .ply or .xyz frame; RECONSTRUCTED its mesh (OUT/reconstructed/f
 """
 import sys
 
-from clothtrack.report import _save_panels
+from clothtrack.report import _save_panels, error_actor
 from clothtrack.rendering import colour_actor
 from clothtrack.sequence import read_sequence
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
 out, cloud_path, mesh_path, aligned_path = sys.argv[1:5]
 error_range = float(sys.argv[5]) if len(sys.argv) > 5 else 0.1
@@ -27,28 +25,7 @@ mesh = read_sequence(mesh_path)[0]
 reader = vtkXMLPolyDataReader()
 reader.SetFileName(aligned_path)
 reader.Update()
-aligned = reader.GetOutput()
-array = "Error" if aligned.GetPointData().GetArray("Error") else "SurfaceDistance"
-mapper = vtkPolyDataMapper()
-mapper.SetInputData(aligned)
-mapper.SetScalarModeToUsePointFieldData()
-mapper.SelectColorArray(array)
-mapper.SetScalarRange(0.0, error_range)
-lut = mapper.GetLookupTable()
-lut.SetHueRange(0.66, 0.0)
-lut.Build()
-aligned_actor = vtkActor()
-aligned_actor.SetMapper(mapper)
-bar = vtkScalarBarActor()
-bar.SetLookupTable(lut)
-bar.SetTitle("error (m)" if array == "Error" else "distance to frame (m)")
-bar.SetNumberOfLabels(6)
-bar.SetWidth(0.12)
-bar.SetHeight(0.6)
-bar.SetPosition(0.85, 0.2)
-bar.GetTitleTextProperty().SetColor(0, 0, 0)
-bar.GetLabelTextProperty().SetColor(0, 0, 0)
-bar.SetLabelFormat("%.2f")
+aligned_actor, bar, _ = error_actor(reader.GetOutput(), error_range)
 panels = [("point cloud, %d points" % cloud.GetNumberOfPoints(), cloud_actor),
           ("reconstruction, %d vertices" % mesh.GetNumberOfPoints(),
            colour_actor(mesh, (0.85, 0.85, 0.85), smooth_normals=True)),

@@ -228,10 +228,10 @@ void warnAboutGaps(const std::vector<std::string>& files)
 /// (in metres, Y up); the list then names the meshes ("" for a cloud that could not be).
 bool reconstructClouds(const AlignSettings& s, std::vector<std::string>& files, int begin, int end)
 {
-  if (!std::any_of(files.begin() + begin, files.begin() + end, isPointCloudPath)) return false;
+  if (!std::any_of(files.begin() + begin, files.begin() + end, isPointCloudFile)) return false;
   const std::vector<std::string> clouds(files.begin() + begin, files.begin() + end);
   for (const auto& file : clouds)
-    if (!isPointCloudPath(file))
+    if (!isPointCloudFile(file))
       throw UsageError{file + ": a mesh among point clouds; give a sequence of one kind"};
   ReconstructSettings settings{s.reconstruction, toConventions(s.sequence), s.skipBadFrames};
   const auto meshes =

@@ -37,7 +37,7 @@ int runReconstruct(const Args& args)
   settings.conventions = toConventions(seq);
   const std::vector<std::string> clouds = listFrames(input);
   for (const auto& cloud : clouds)
-    if (!isPointCloudPath(cloud))
+    if (!isPointCloudFile(cloud))
       throw UsageError{cloud + ": not a point cloud (a mesh with faces needs no reconstruction)"};
   const auto meshes = reconstructSequence(clouds, output, settings);
   const long written =

@@ -50,7 +50,7 @@ void resolveAutomatic(SequenceOptions& options, const std::string& input)
   if (options.unit != "auto" && options.up != "auto") return;
   const std::vector<std::string> frames = clothtrack::listFrames(input);
   clothtrack::TriangleMesh first;
-  if (clothtrack::isPointCloudPath(frames.front()))
+  if (clothtrack::isPointCloudFile(frames.front()))
     first.V = clothtrack::readPointCloudFile(frames.front()).P;
   else
     first = clothtrack::readMeshFile(frames.front());

@@ -79,8 +79,6 @@ def _chosen_frames(metrics):
 
 def _render_frame(out, metrics, k, path, error_range):
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-    from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
-    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
     from clothtrack.rendering import colour_actor
     from clothtrack.sequence import read_sequence
@@ -93,11 +91,21 @@ def _render_frame(out, metrics, k, path, error_range):
     conventions = {"length_unit": metrics["unit"], "up_axis": metrics["up"]}
     frame = read_sequence(metrics["files"][k], **conventions)[0]
     template = read_sequence(metrics["files"][metrics["template_frame"]], **conventions)[0]
-    array = "Error" if result.GetPointData().GetArray("Error") else "SurfaceDistance"
-
     panels = [("input frame %d" % number, colour_actor(frame, (0.85, 0.85, 0.85), smooth_normals=True)),
               ("template (frame %d)" % metrics["frame_numbers"][metrics["template_frame"]],
                colour_actor(template, (0.86, 0.72, 0.62), smooth_normals=True))]
+    coloured, bar, label = error_actor(result, error_range)
+    panels.append(("aligned template, %s" % label.split(" (")[0], coloured))
+    _save_panels(panels, path, bar)
+
+
+def error_actor(result, error_range):
+    """An aligned frame coloured by its per-vertex Error (SurfaceDistance without a ground truth),
+    blue at 0 to red at `error_range` metres: (actor, scalar bar, the bar's title)."""
+    from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+
+    array = "Error" if result.GetPointData().GetArray("Error") else "SurfaceDistance"
     mapper = vtkPolyDataMapper()
     mapper.SetInputData(result)
     mapper.SetScalarModeToUsePointFieldData()
@@ -106,12 +114,11 @@ def _render_frame(out, metrics, k, path, error_range):
     lut = mapper.GetLookupTable()
     lut.SetHueRange(0.66, 0.0)
     lut.Build()
-    coloured = vtkActor()
-    coloured.SetMapper(mapper)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
     label = "error (m)" if array == "Error" else "distance to frame (m)"
-    panels.append(("aligned template, %s" % label.split(" (")[0], coloured))
     bar = vtkScalarBarActor()
-    bar.SetLookupTable(mapper.GetLookupTable())
+    bar.SetLookupTable(lut)
     bar.SetTitle(label)
     bar.SetNumberOfLabels(6)
     bar.SetWidth(0.12)
@@ -120,7 +127,7 @@ def _render_frame(out, metrics, k, path, error_range):
     bar.GetTitleTextProperty().SetColor(0, 0, 0)
     bar.GetLabelTextProperty().SetColor(0, 0, 0)
     bar.SetLabelFormat("%.2f")
-    _save_panels(panels, path, bar)
+    return actor, bar, label
 
 
 def _save_panels(panels, path, bar=None):

@@ -42,9 +42,9 @@ Camera makeCamera(const DepthRig& rig, int k)
   camera.toCamera.row(2) = forward.transpose();
   camera.focal = rig.focalPixels;
   camera.width = rig.width;
-  camera.height = rig.height_pixels;
+  camera.height = rig.height;
   camera.cx = 0.5 * rig.width;
-  camera.cy = 0.5 * rig.height_pixels;
+  camera.cy = 0.5 * rig.height;
   return camera;
 }
 
@@ -94,7 +94,7 @@ Vec3 cameraPosition(const DepthRig& rig, int k)
   // Offset by half a step: four cameras stand at the diagonals and see front, back and sides.
   const double angle = 2 * M_PI * (k + 0.5) / rig.cameras;
   return rig.centre +
-         Vec3(rig.distance * std::sin(angle), rig.height, rig.distance * std::cos(angle));
+         Vec3(rig.distance * std::sin(angle), rig.elevation, rig.distance * std::cos(angle));
 }
 
 PointCloud captureDepth(const TriangleMesh& truth, const DepthRig& rig)

@@ -8,14 +8,14 @@ namespace clothtrack
 {
 struct DepthRig
 {
-  int cameras = 4;            ///< evenly spaced on a horizontal circle around `centre`
-  Vec3 centre = Vec3::Zero(); ///< the point every camera looks at (Y up)
-  double distance = 3.0;      ///< metres from the centre, horizontally
-  double height = 0.3;        ///< camera height above the centre, metres
-  int width = 480, height_pixels = 640;
-  double focalPixels = 600; ///< about 5 mm between pixels at 3 m
-  double noise = 0.003;     ///< standard deviation of the depth error along the ray, metres
-  double outliers = 0.01;   ///< stray points added, as a share of the seen points
+  int cameras = 4;               ///< evenly spaced on a horizontal circle around `centre`
+  Vec3 centre = Vec3::Zero();    ///< the point every camera looks at (Y up)
+  double distance = 3.0;         ///< metres from the centre, horizontally
+  double elevation = 0.3;        ///< camera height above the centre, metres
+  int width = 480, height = 640; ///< image size, pixels
+  double focalPixels = 600;      ///< about 5 mm between pixels at 3 m
+  double noise = 0.003;          ///< standard deviation of the depth error along the ray, metres
+  double outliers = 0.01;        ///< stray points added, as a share of the seen points
   unsigned seed = 1;
 };
 

@@ -5,10 +5,20 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 namespace clothtrack
 {
+void requireNonEmptyFile(const std::string& path)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw Error(path + ": no such file");
+  if (!fs::is_regular_file(path, ec)) throw Error(path + ": not a regular file");
+  if (fs::file_size(path, ec) == 0) throw Error(path + ": empty file");
+}
+
 std::string readFileBytes(const std::string& path, bool text)
 {
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),

@@ -1,5 +1,6 @@
 #include "MeshIO.h"
 #include "FileBytes.h"
+#include "TextTokens.h"
 
 #include <clothtrack/base/Error.h>
 
@@ -20,49 +21,6 @@ namespace
 std::string where(const std::string& path, int line)
 {
   return path + ":" + std::to_string(line) + ": ";
-}
-
-bool isSpace(char c)
-{
-  return c == ' ' || c == '\t' || c == '\r';
-}
-
-// Splits one line into whitespace-separated tokens, views into the line: no allocation once the
-// vector has grown to the longest line.
-void tokenize(const char* begin, const char* end, std::vector<std::string_view>& tokens)
-{
-  tokens.clear();
-  const char* p = begin;
-  while (p < end)
-  {
-    while (p < end && isSpace(*p)) ++p;
-    const char* start = p;
-    while (p < end && !isSpace(*p)) ++p;
-    if (p > start) tokens.emplace_back(start, static_cast<size_t>(p - start));
-  }
-}
-
-/// strtod's reading of the whole token: the reference for what a coordinate is.
-bool parseDoubleSlowly(std::string_view token, double& value)
-{
-  const std::string s(token);
-  char* endp = nullptr;
-  errno = 0;
-  value = std::strtod(s.c_str(), &endp);
-  // ERANGE also flags an underflow to a denormal or zero, which is a fine coordinate.
-  const bool overflow = errno == ERANGE && std::abs(value) > 1.0;
-  return endp != s.c_str() && *endp == '\0' && !overflow;
-}
-
-bool parseDouble(std::string_view token, double& value)
-{
-  // std::from_chars is several times faster than strtod and rounds the same; what it does not
-  // take whole (a '+' sign, hexadecimal, out of range) goes to strtod, so both accept the same.
-  const char* begin = token.data();
-  const char* end = begin + token.size();
-  const auto [stop, error] = std::from_chars(begin, end, value);
-  if (error == std::errc() && stop == end) return true;
-  return parseDoubleSlowly(token, value);
 }
 
 /// A face index: an integer, alone or followed by '/' (OBJ's v/vt/vn).

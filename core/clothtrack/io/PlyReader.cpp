@@ -5,6 +5,7 @@
 #include "PointCloudIO.h"
 #include <clothtrack/base/Error.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
@@ -165,9 +166,16 @@ bool allFound(const int (&index)[3])
   return index[0] >= 0 && index[1] >= 0 && index[2] >= 0;
 }
 
-PlyContents readPLYContents(const std::string& path)
+/// The header of a PLY file whose bytes (at least up to the line after end_header) are `data`.
+struct PlyHeader
 {
-  const std::string data = readFileBytes(path);
+  Format format;
+  std::vector<Element> elements;
+  size_t bodyStart; ///< offset of the first byte after the header
+};
+
+PlyHeader parsePlyHeader(const std::string& path, const std::string& data)
+{
   if (data.empty()) throw Error(path + ": empty file");
   if (data.compare(0, 3, "ply") != 0)
     throw Error(path + ": not a PLY file (does not start with 'ply')");
@@ -231,7 +239,13 @@ PlyContents readPLYContents(const std::string& path)
     }
   }
   if (!haveFormat) throw Error(path + ": PLY header has no format line");
+  return {format, elements, bodyStart};
+}
 
+PlyContents readPLYContents(const std::string& path)
+{
+  const std::string data = readFileBytes(path);
+  const auto [format, elements, bodyStart] = parsePlyHeader(path, data);
   PlyContents contents;
   std::vector<double>& coords = contents.coords;
   std::vector<int>& faces = contents.faces;
@@ -343,6 +357,25 @@ TriangleMesh readPLY(const std::string& path)
 {
   const PlyContents contents = readPLYContents(path);
   return meshFromArrays(contents.coords, contents.faces);
+}
+
+bool plyDeclaresFaces(const std::string& path)
+{
+  // The header is all that is needed: the file's first 64 kB hold any real one.
+  std::ifstream in(path, std::ios::binary);
+  std::string head(1 << 16, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  try
+  {
+    const PlyHeader header = parsePlyHeader(path, head);
+    return std::any_of(header.elements.begin(), header.elements.end(),
+                       [](const Element& e) { return e.name == "face" && e.count > 0; });
+  }
+  catch (const Error&)
+  {
+    return true; // not a readable PLY header: read as a mesh, whose reader says what is wrong
+  }
 }
 
 PointCloud readPLYPoints(const std::string& path)

@@ -1,49 +1,18 @@
 #include "PointCloudIO.h"
 #include "FileBytes.h"
 #include "FrameList.h"
+#include "TextTokens.h"
 
 #include <clothtrack/base/Error.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 
 namespace clothtrack
 {
-namespace
-{
-/// True when the PLY header declares a face element with at least one face.
-bool plyHeaderDeclaresFaces(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open file");
-  std::string line;
-  for (int lineNo = 0; lineNo < 10000 && std::getline(in, line); ++lineNo)
-  {
-    if (line.compare(0, 10, "end_header") == 0) return false;
-    std::istringstream words(line);
-    std::string keyword, name;
-    long count = 0;
-    if ((words >> keyword >> name >> count) && keyword == "element" && name == "face")
-      return count > 0;
-  }
-  return false;
-}
-
-bool parseNumber(const char*& p, const char* end, double& value)
-{
-  while (p < end && (*p == ' ' || *p == '\t' || *p == '\r' || *p == ',')) ++p;
-  if (p >= end) return false;
-  const auto [stop, error] = std::from_chars(p, end, value);
-  if (error != std::errc() || stop == p) return false;
-  p = stop;
-  return true;
-}
-} // namespace
 
 PointCloud cloudFromArrays(const std::vector<double>& coords, const std::vector<double>& normals,
                            const std::vector<double>& colours)
@@ -73,7 +42,9 @@ PointCloud readXYZ(const std::string& path)
 {
   const std::string data = readFileBytes(path);
   std::vector<double> coords, normals;
-  int columns = 0, lineNo = 0;
+  std::vector<std::string_view> tokens;
+  size_t columns = 0;
+  int lineNo = 0;
   const char* p = data.data();
   const char* end = p + data.size();
   while (p < end)
@@ -82,27 +53,23 @@ PointCloud readXYZ(const std::string& path)
     if (!lineEnd) lineEnd = end;
     ++lineNo;
     const char* hash = static_cast<const char*>(std::memchr(p, '#', lineEnd - p));
-    const char* stop = hash ? hash : lineEnd;
-    double values[7];
-    int count = 0;
-    const char* q = p;
-    while (count < 7 && parseNumber(q, stop, values[count])) ++count;
-    while (q < stop && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
-    const std::string at = path + ":" + std::to_string(lineNo) + ": ";
-    if (q != stop) throw Error(at + "not a number in an XYZ line");
-    if (count != 0)
-    {
-      if (count != 3 && count != 6)
-        throw Error(at + "an XYZ line holds 3 (x y z) or 6 (x y z nx ny nz) numbers, not " +
-                    std::to_string(count));
-      if (columns == 0) columns = count;
-      if (count != columns)
-        throw Error(at + std::to_string(count) + " numbers where the first line had " +
-                    std::to_string(columns));
-      coords.insert(coords.end(), values, values + 3);
-      if (count == 6) normals.insert(normals.end(), values + 3, values + 6);
-    }
+    tokenize(p, hash ? hash : lineEnd, tokens);
     p = lineEnd + 1;
+    if (tokens.empty()) continue;
+    const std::string at = path + ":" + std::to_string(lineNo) + ": ";
+    if (tokens.size() != 3 && tokens.size() != 6)
+      throw Error(at + "an XYZ line holds 3 (x y z) or 6 (x y z nx ny nz) numbers, not " +
+                  std::to_string(tokens.size()));
+    if (columns == 0) columns = tokens.size();
+    if (tokens.size() != columns)
+      throw Error(at + std::to_string(tokens.size()) + " numbers where the first line had " +
+                  std::to_string(columns));
+    double values[6];
+    for (size_t k = 0; k < tokens.size(); ++k)
+      if (!parseDouble(tokens[k], values[k]))
+        throw Error(at + "'" + std::string(tokens[k]) + "' is not a number");
+    coords.insert(coords.end(), values, values + 3);
+    if (columns == 6) normals.insert(normals.end(), values + 3, values + 6);
   }
   return cloudFromArrays(coords, normals, {});
 }
@@ -155,7 +122,7 @@ bool isPointCloudFile(const std::string& path)
 {
   const std::string ext = lowerCaseExtension(path);
   if (ext == ".xyz" || ext == ".pcd") return true;
-  return ext == ".ply" && !plyHeaderDeclaresFaces(path);
+  return ext == ".ply" && !plyDeclaresFaces(path);
 }
 
 int dropInvalidPoints(PointCloud& cloud, const std::string& name, int minimumPoints)

@@ -20,6 +20,9 @@ PointCloud readXYZ(const std::string& path);
 void writePLYPoints(const std::string& path, const PointCloud& cloud);
 void writeXYZ(const std::string& path, const PointCloud& cloud);
 
+/// True when the PLY file's header declares faces, or cannot be read as a PLY header.
+bool plyDeclaresFaces(const std::string& path);
+
 /// True for .xyz and .pcd files, and for a .ply file whose header declares no faces.
 bool isPointCloudFile(const std::string& path);
 

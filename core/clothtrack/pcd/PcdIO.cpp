@@ -1,6 +1,7 @@
 #include "PcdIO.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/io/FileBytes.h>
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/common/io.h>
@@ -10,7 +11,6 @@
 #include <pcl/point_types.h>
 
 #include <algorithm>
-#include <filesystem>
 
 namespace clothtrack
 {
@@ -33,9 +33,7 @@ struct QuietPcl
 
 PointCloud readPCD(const std::string& path)
 {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw Error(path + ": no such file");
-  if (std::filesystem::file_size(path, ec) == 0) throw Error(path + ": empty file");
+  requireNonEmptyFile(path);
   pcl::PCLPointCloud2 blob;
   {
     QuietPcl quiet;
