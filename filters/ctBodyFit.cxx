@@ -41,6 +41,7 @@ ctOptionClampDefinition(ctBodyFit, OutsideTolerance, double, Options.transfer.ou
                         10.0);
 ctOptionClampDefinition(ctBodyFit, InsideTolerance, double, Options.transfer.insideTolerance, 0.0,
                         10.0);
+ctOptionDefinition(ctBodyFit, RegisterFrames, bool, Options.registerFrames);
 
 ctBodyFit::ctBodyFit()
 {
@@ -279,4 +280,5 @@ void ctBodyFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Samples: " << this->Options.fit.samples << "\n";
   os << indent << "OutsideTolerance: " << this->Options.transfer.outsideTolerance << "\n";
   os << indent << "InsideTolerance: " << this->Options.transfer.insideTolerance << "\n";
+  os << indent << "RegisterFrames: " << this->Options.registerFrames << "\n";
 }

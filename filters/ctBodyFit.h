@@ -75,6 +75,11 @@ public:
   /// Landmark transfer: tau_i (metres).
   virtual void SetInsideTolerance(double value);
   virtual double GetInsideTolerance();
+  /// Start each frame from its predecessor's pose moved by the rigid motion between the two
+  /// surfaces (generalized ICP, PCL). Off by default (it did not pay on the sequences measured).
+  virtual void SetRegisterFrames(bool value);
+  virtual bool GetRegisterFrames();
+  vtkBooleanMacro(RegisterFrames, bool);
 
   /// Threads of this filter's loops (0: the process's count, every core by default).
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);

@@ -12,6 +12,7 @@
 #include <clothtrack/fit/TemplateFit.h>
 #include <clothtrack/pipeline/BodyStartPrediction.h>
 #include <clothtrack/pipeline/FitJudge.h>
+#include <clothtrack/pipeline/LandmarkConsensus.h>
 
 #include <vtkCharArray.h>
 #include <vtkDataArray.h>
@@ -46,6 +47,8 @@ ctOptionClampDefinition(ctTemplateFit, MaximumNormalAngle, double, Options.maxim
 ctOptionDefinition(ctTemplateFit, UseCorrespondence, bool, Options.useCorrespondence);
 ctOptionDefinition(ctTemplateFit, UseNearest, bool, Options.useNearest);
 ctOptionClampDefinition(ctTemplateFit, PredictRadius, double, Prediction.predictRadius, 0.0, 100.0);
+ctOptionClampDefinition(ctTemplateFit, LandmarkConsensus, double, Prediction.landmarkConsensus, 0.0,
+                        10.0);
 
 namespace
 {
@@ -357,7 +360,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
       hooks.start = landmarkStartPrediction([&](int k) -> const TriangleMesh& { return frames[k]; },
                                             [&](int k) -> const std::vector<OrientedSurfacePoint>&
                                             { return landmarks[k]; },
-                                            this->Prediction.predictRadius);
+                                            this->Prediction);
     }
     auto* bodies = this->GetNumberOfInputConnections(3) > 0
                        ? vtkMultiBlockDataSet::GetData(inputVector[3], 0)
@@ -420,5 +423,6 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseNearest: " << this->Options.useNearest << "\n";
   os << indent << "RetryDoubtfulFrames: " << this->RetryDoubtfulFrames << "\n";
   os << indent << "PredictRadius: " << this->Prediction.predictRadius << "\n";
+  os << indent << "LandmarkConsensus: " << this->Prediction.landmarkConsensus << "\n";
   os << indent << "StartFromBody: " << this->StartFromBody << "\n";
 }

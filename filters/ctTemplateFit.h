@@ -126,6 +126,11 @@ public:
   /// predicts each frame's start; 0 starts from the neighbour's fit as it is.
   virtual void SetPredictRadius(double value);
   virtual double GetPredictRadius();
+  /// With landmarks: landmark pairs that the locally rigid motion of their neighbours does not
+  /// carry within this distance (metres) are left out of the prediction (random sample
+  /// consensus, PCL); 0 keeps every pair.
+  virtual void SetLandmarkConsensus(double value);
+  virtual double GetLandmarkConsensus();
 
   /// With bodies on input port 3: each frame starts from the template posed by its body
   /// (default on).

@@ -63,9 +63,16 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       po::value(&s.prediction.predictRadius)->default_value(s.prediction.predictRadius),
       "each frame's fit starts from its neighbour's moved by the landmarks' locally rigid motion, "
       "weighted over this radius (m; 0: from the neighbour's fit as it is)")(
+      "landmark-consensus",
+      po::value(&s.prediction.landmarkConsensus)->default_value(s.prediction.landmarkConsensus),
+      "start prediction: leave out landmark pairs that the locally rigid motion of their "
+      "neighbours does not carry within this distance (m, random sample consensus; 0: keep all)")(
       "no-body-start", po::bool_switch(),
       "start each frame's fit from its neighbour's (moved as --predict-radius says) rather than "
       "from the template posed by the body fitted to the frame")(
+      "register-frames", po::bool_switch(&s.registerFrames),
+      "body fit: start each frame from its predecessor's pose moved by the rigid motion between "
+      "the two surfaces (generalized ICP)")(
       "no-retry", po::bool_switch(),
       "keep a frame's first fit even when it is clearly doubtful (by default such a frame is "
       "fitted again from other starts and the most confident fit kept)")(
@@ -153,6 +160,8 @@ void check(const AlignSettings& s)
   if (!(s.truth.maximumTruthDistance > 0))
     throw UsageError{"--maximum-truth-distance must be positive"};
   if (!(s.prediction.predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
+  if (!(s.prediction.landmarkConsensus >= 0))
+    throw UsageError{"--landmark-consensus must be 0 or more"};
   if (!(fit.solverTolerance > 0 && fit.solverTolerance < 1) ||
       !(fit.intermediateTolerance > 0 && fit.intermediateTolerance < 1))
     throw UsageError{"--solver-tolerance and --intermediate-tolerance must be in (0, 1)"};
@@ -193,6 +202,7 @@ nlohmann::json AlignSettings::fitKey() const
           {"nearest_reuse", fit.nearestReuse},
           {"truth_distance", truth.maximumTruthDistance},
           {"predict_radius", prediction.predictRadius},
+          {"landmark_consensus", prediction.landmarkConsensus},
           {"body_start", startFromBody},
           {"use_correspondence", fit.useCorrespondence},
           {"retry_doubtful", retryDoubtful},

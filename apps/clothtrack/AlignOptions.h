@@ -49,6 +49,9 @@ struct AlignSettings
   bool startFromBody = true;
   /// A frame whose fit is clearly doubtful is fitted again from other starts (FitJudge.h).
   bool retryDoubtful = true;
+  /// Body fit: each frame starts from its predecessor's pose moved by the rigid motion between
+  /// the two surfaces (BodyStageOptions::registerFrames).
+  bool registerFrames = false;
   bool skipBadFrames = false;
   bool noReport = false;
 

@@ -29,6 +29,7 @@
 #include <clothtrack/pipeline/BodyStartPrediction.h>
 #include <clothtrack/pipeline/CorrespondenceStage.h>
 #include <clothtrack/pipeline/FitJudge.h>
+#include <clothtrack/pipeline/LandmarkConsensus.h>
 #include <clothtrack/pipeline/TemplateStage.h>
 
 #include <nlohmann/json.hpp>
@@ -314,7 +315,10 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
           {"headings", {f.headings, f.headingAmbiguity}},
           {"judge", {f.poorDistance, f.insideTolerance, f.poorInside}},
           {"continuity", {f.neighbourGap, f.unexplainedRatio, f.unexplainedMargin}},
-          {"transfer", {o.transfer.outsideTolerance, o.transfer.insideTolerance}}};
+          {"transfer", {o.transfer.outsideTolerance, o.transfer.insideTolerance}},
+          {"register_frames",
+           {o.registerFrames, o.registration.voxelSize, o.registration.maximumDistance,
+            o.registration.maximumIterations, o.minimumRegistrationOverlap}}};
 }
 
 /// Stage 1, or its result from the work folder.
@@ -323,7 +327,8 @@ void runBodyStage(Run& run)
   const AlignSettings& s = run.settings;
   const int n = run.input.count();
   const fs::path cache = run.work / "landmarks.json";
-  const BodyStageOptions options;
+  BodyStageOptions options;
+  options.registerFrames = s.registerFrames;
   run.landmarkKey = {{"files", run.input.files},  {"model", s.modelPath},
                      {"up", s.sequence.up},       {"unit", s.sequence.unit},
                      {"scale", s.sequence.scale}, {"body_fit", bodyStageKey(options)}};
@@ -540,8 +545,7 @@ void runFitStage(Run& run, const AlignedOutput& output)
   if (s.prediction.predictRadius > 0)
     hooks.start = landmarkStartPrediction(
         [&](int k) -> const TriangleMesh& { return in.frames[k]; },
-        [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; },
-        s.prediction.predictRadius);
+        [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; }, s.prediction);
   if (static_cast<int>(run.body.body.frames.size()) == n)
   {
     BodyModel ownModel;
@@ -659,6 +663,7 @@ nlohmann::json evaluate(const Run& run)
   metrics["resumed_frames"] = resumed;
   metrics["reused_correspondence_frames"] = run.reusedCorrespondences;
   metrics["reused_landmark_frames"] = run.reusedLandmarks;
+  metrics["register_frames"] = s.registerFrames;
   nlohmann::json jumps = nlohmann::json::array();
   for (const FrameJump& jump : in.jumps)
     jumps.push_back({{"frame", jump.frame},
@@ -670,6 +675,7 @@ nlohmann::json evaluate(const Run& run)
   metrics["threads"] = threadCount();
   metrics["solver"] = s.solver;
   metrics["predict_radius_m"] = s.prediction.predictRadius;
+  metrics["landmark_consensus_m"] = s.prediction.landmarkConsensus;
   std::vector<double> landmarkCounts;
   for (const auto& l : run.body.landmarks) landmarkCounts.push_back(static_cast<double>(l.size()));
   metrics["landmarks_per_frame"] = landmarkCounts;

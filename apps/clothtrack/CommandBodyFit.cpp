@@ -66,7 +66,10 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
       "landmark transfer tau_o (m)")(
       "inside-tolerance",
       po::value(&transfer.insideTolerance)->default_value(transfer.insideTolerance),
-      "landmark transfer tau_i (m)");
+      "landmark transfer tau_i (m)")(
+      "register-frames", po::bool_switch(&s.stage.registerFrames),
+      "start each frame from its predecessor's pose moved by the rigid motion between the two "
+      "surfaces (generalized ICP)");
   addSequenceOptions(options, s.sequence);
   po::positional_options_description positional;
   positional.add("input", 1);

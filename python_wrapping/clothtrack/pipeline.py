@@ -88,11 +88,11 @@ def _as_sequence(frames, frame_rate):
 # filter's default, which is the core's (docs/parameters.md).
 _STAGE_KEYWORDS = {
     "body": ("samples", "temporal_weight", "root_temporal_weight", "outside_tolerance",
-             "inside_tolerance"),
+             "inside_tolerance", "register_frames"),
     "correspondence": ("epsilon", "minimum_radius", "maximum_radius", "minimum_seed_consensus",
                        "minimum_shell_area", "persistence"),
     "fit": ("solver_tolerance", "intermediate_tolerance", "refactor_steps", "nearest_reuse",
-            "maximum_nearest_distance", "start_from_body"),
+            "maximum_nearest_distance", "start_from_body", "landmark_consensus"),
     "error": ("maximum_truth_distance",),
 }
 

@@ -29,6 +29,7 @@ expect_run(1 "give --unit or --scale, not both" inspect ${WORK}/seq --unit cm --
 file(WRITE ${WORK}/tiny/t_0.obj "v 0 0 0\nv 0.001 0 0\nv 0 0.001 0\nf 1 2 3\n")
 expect_run(1 "t_0.obj: no unit of m, dm, cm or mm makes the subject a person's height" inspect ${WORK}/tiny --unit auto)
 expect_run(1 "unrecognised option" inspect ${WORK}/seq --bogus)
+expect_run(1 "--landmark-consensus must be 0 or more" align ${WORK}/seq -o ${WORK}/lc --landmark-consensus -0.1)
 expect_run(1 "--output must end in .pvd" convert ${WORK}/seq -o ${WORK}/x.vtp)
 file(WRITE ${WORK}/bad/a_0.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
 file(WRITE ${WORK}/bad/a_1.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")

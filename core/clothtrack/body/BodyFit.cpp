@@ -162,6 +162,16 @@ std::vector<BodyPose> okPoses(const std::vector<int>& usable, int end,
   return poses;
 }
 
+/// The start of a frame that continues `from`: the predecessor's pose, moved by the rigid
+/// motion between the two surfaces when BodyFitOptions::frameMotion gives one.
+BodyPose predictedPose(const SequenceFitter& fitter, const BodyFitOptions& options,
+                       const TriangleMesh& from, const TriangleMesh& to, const BodyPose& previous)
+{
+  if (!options.frameMotion) return previous;
+  const std::optional<Eigen::Isometry3d> motion = options.frameMotion(from, to);
+  return motion ? fitter.movedRigidly(previous, *motion) : previous;
+}
+
 /// Pass 1: the mean shape, each frame from its neighbour's pose, the first from the most
 /// plausible heading. A frame far from its predecessor is not tied to it by the temporal prior,
 /// and is also started from the poses of the frames fitted before it (refitFromPoses).
@@ -179,9 +189,11 @@ void firstPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
     {
       const FrameSurface& before = surfaces.get(last);
       const double gap = meanSurfaceGap(*before.mesh, *before.locator, *s.mesh, *s.locator);
-      surfaces.release(last);
       const bool continuous = gap <= options.neighbourGap;
-      const BodyPose init = fits[last].pose;
+      const BodyPose init =
+          continuous ? predictedPose(fitter, options, *before.mesh, *s.mesh, fits[last].pose)
+                     : fits[last].pose;
+      surfaces.release(last);
       fitter.fitFrame(s, init, continuous ? &init : nullptr, options.stages, fit, continuous);
       if (!continuous) fitter.refitFromPoses(s, okPoses(usable, i, fits), fit);
       fit.previousGap = gap;

@@ -34,6 +34,8 @@
 
 #include <clothtrack/base/Progress.h>
 
+#include <Eigen/Geometry>
+
 #include <functional>
 #include <optional>
 #include <string>
@@ -41,6 +43,10 @@
 
 namespace clothtrack
 {
+/// The rigid motion carrying the surface of one frame onto the next one's, or nullopt.
+using FrameMotion = std::function<std::optional<Eigen::Isometry3d>(const TriangleMesh& from,
+                                                                   const TriangleMesh& to)>;
+
 struct BodyFitStage
 {
   double landmarkWeight; ///< w_l
@@ -99,6 +105,11 @@ struct BodyFitOptions
   double poorDistance = 0.05;    ///< median body-to-frame distance above which a fit is poor
   double insideTolerance = 0.02; ///< a body sample this far outside still counts as inside
   double poorInside = 0.75;      ///< fraction of the body inside the frame below which it is poor
+  /// Optional: the rigid motion carrying one frame's surface onto the next one's (for instance
+  /// registerRigidly in the cloud stage), or nullopt when it is not known. The first pass then
+  /// moves the predecessor's pose by it before fitting a frame, so that a turn or a step already
+  /// made is not left to the fit to find. Empty: the predecessor's pose as it is.
+  FrameMotion frameMotion;
 };
 
 /// Changes whenever the fit's results change for the same options, so that results cached by an

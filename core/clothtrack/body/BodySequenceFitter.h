@@ -284,6 +284,19 @@ public:
     BodyFrameFit fit;
   };
 
+  /// `pose` with the whole body moved by `motion`: the root turned and the body shifted so that
+  /// its samples land where `motion` carries them.
+  BodyPose movedRigidly(const BodyPose& pose, const Eigen::Isometry3d& motion) const
+  {
+    const int n = samples_.numSamples();
+    const Vec3 target = motion * Vec3(samples_.pose(pose).topRows(n).colwise().mean().transpose());
+    BodyPose moved = pose;
+    const Eigen::Matrix3d root = axisAngleToMatrix(pose.rotations.row(Pelvis).transpose());
+    moved.rotations.row(Pelvis) = matrixToAxisAngle(motion.linear() * root).transpose();
+    moved.translation += target - samples_.pose(moved).topRows(n).colwise().mean().transpose();
+    return moved;
+  }
+
   /// Tries every heading about the up axis, the body centred on the frame and moved rigidly;
   /// then fits fully from the best heading and from those a quarter, half and three quarters
   /// of a turn away (front and back are hard to tell apart under wide clothing: the limbs must

@@ -87,14 +87,29 @@ Points predictMotion(const Points& points, const std::vector<Vec3>& before,
               });
   return out;
 }
+
 StartPrediction landmarkStartPrediction(
     const std::function<const TriangleMesh&(int)>& frames,
-    const std::function<const std::vector<OrientedSurfacePoint>&(int)>& landmarks, double radius)
+    const std::function<const std::vector<OrientedSurfacePoint>&(int)>& landmarks, double radius,
+    const LandmarkPairFilter& trusted)
 {
   return [=](int k, int from, const Points& fitOfFrom)
   {
     std::vector<Vec3> before, after;
     pairLandmarks(frames(from), landmarks(from), frames(k), landmarks(k), before, after);
+    if (trusted)
+    {
+      const std::vector<bool> keep = trusted(before, after);
+      size_t kept = 0;
+      for (size_t i = 0; i < before.size(); ++i)
+        if (keep.at(i))
+        {
+          before[kept] = before[i];
+          after[kept++] = after[i];
+        }
+      before.resize(kept);
+      after.resize(kept);
+    }
     return predictMotion(fitOfFrom, before, after, radius);
   };
 }

@@ -26,6 +26,11 @@ struct StartPredictionOptions
   /// Gaussian width (metres) of the locally rigid landmark motion that moves the neighbour's
   /// fit to a frame's start; 0 starts from the neighbour's fit as it is.
   double predictRadius = 0.3;
+  /// Landmark pairs that the locally rigid motion of their neighbours (within predictRadius)
+  /// does not carry within this distance are dropped first (random sample consensus,
+  /// pipeline/LandmarkConsensus.h; metres). 0 keeps every pair: on pjump it dropped 2 % of the
+  /// pairs and changed the mean error by 0.02 cm (BENCHMARKS.md, "PCL in the pipeline").
+  double landmarkConsensus = 0.0;
 };
 
 /// Moves `points` by the locally weighted rigid motion taking `before` to `after` (paired
@@ -35,10 +40,16 @@ Points predictMotion(const Points& points, const std::vector<Vec3>& before,
                      const std::vector<Vec3>& after,
                      double radius = StartPredictionOptions{}.predictRadius);
 
+/// Which paired landmark positions (before[i], after[i]) to trust: one flag per pair.
+using LandmarkPairFilter = std::function<std::vector<bool>(const std::vector<Vec3>& before,
+                                                           const std::vector<Vec3>& after)>;
+
 /// The start of each frame of a sequence fit: the neighbour's fit moved by the motion of the
 /// landmarks seen on both frames (pairLandmarks, predictMotion over `radius`). `frames` and
-/// `landmarks` (one per frame) must outlive the prediction.
+/// `landmarks` (one per frame) must outlive the prediction. `trusted`, when given, drops the
+/// pairs it does not trust first (a landmark carried onto the wrong limb of one frame).
 StartPrediction landmarkStartPrediction(
     const std::function<const TriangleMesh&(int)>& frames,
-    const std::function<const std::vector<OrientedSurfacePoint>&(int)>& landmarks, double radius);
+    const std::function<const std::vector<OrientedSurfacePoint>&(int)>& landmarks, double radius,
+    const LandmarkPairFilter& trusted = {});
 } // namespace clothtrack

@@ -12,13 +12,34 @@
 
 namespace clothtrack
 {
+FrameMotion rigidFrameMotion(const RigidRegistrationOptions& options, double minimumOverlap)
+{
+  return [options, minimumOverlap](const TriangleMesh& from,
+                                   const TriangleMesh& to) -> std::optional<Eigen::Isometry3d>
+  {
+    try
+    {
+      const RigidRegistration r = registerRigidly(from.V, to.V, options);
+      if (!r.converged || r.overlap < minimumOverlap) return std::nullopt;
+      return r.motion;
+    }
+    catch (const Error&) // too few points to register: the predecessor's pose as it is
+    {
+      return std::nullopt;
+    }
+  };
+}
+
 BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
                                     const std::vector<const TriangleMesh*>& frames,
                                     const BodyStageOptions& options, const StageProgress& progress)
 {
   constexpr double fitShare = 0.95;
   BodyStageResult out;
-  out.body = fitBodySequence(model, frames, options.fit,
+  BodyFitOptions fit = options.fit;
+  if (options.registerFrames)
+    fit.frameMotion = rigidFrameMotion(options.registration, options.minimumRegistrationOverlap);
+  out.body = fitBodySequence(model, frames, fit,
                              [&](double done) { return !progress || progress(fitShare * done); });
   const int n = static_cast<int>(frames.size());
   out.bodyLandmarks.resize(n);
