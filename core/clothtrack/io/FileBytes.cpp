@@ -40,4 +40,26 @@ std::string readFileBytes(const std::string& path, bool text)
   if (text && bytes.compare(0, 3, "\xEF\xBB\xBF") == 0) bytes.erase(0, 3);
   return bytes;
 }
+
+std::string readFileStart(const std::string& path,
+                          const std::function<bool(const std::string& bytes)>& enough)
+{
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
+  std::string bytes;
+  char chunk[65536];
+  for (size_t got; !enough(bytes) && (got = std::fread(chunk, 1, sizeof(chunk), file.get())) > 0;)
+    bytes.append(chunk, got);
+  if (std::ferror(file.get())) throw Error(path + ": read error");
+  return bytes;
+}
+
+std::uintmax_t fileSizeOf(const std::string& path)
+{
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error(path + ": " + ec.message());
+  return size;
+}
 } // namespace clothtrack

@@ -25,19 +25,24 @@ bool startsWithSolid(const std::string& data)
 
 void checkSTLFile(const std::string& path)
 {
-  const std::string data = readFileBytes(path, /*text=*/false);
-  // Binary: little-endian triangle count after the 80-byte header.
+  // Binary: little-endian triangle count after the 80-byte header, checked against the file's
+  // size without reading the triangles (VTK's reader reads them next).
+  const std::uintmax_t size = fileSizeOf(path);
   uint32_t declared = 0;
-  if (data.size() >= 84)
+  if (size >= 84)
   {
-    const auto* b = reinterpret_cast<const unsigned char*>(data.data() + 80);
+    const std::string head =
+        readFileStart(path, [](const std::string& bytes) { return bytes.size() >= 84; });
+    if (head.size() < 84) throw Error(path + ": read error (the file shrank while read)");
+    const auto* b = reinterpret_cast<const unsigned char*>(head.data() + 80);
     declared = b[0] | (b[1] << 8) | (b[2] << 16) | (static_cast<uint32_t>(b[3]) << 24);
-    if (84 + 50 * static_cast<uint64_t>(declared) == data.size())
+    if (84 + 50 * static_cast<uint64_t>(declared) == size)
     {
       if (declared == 0) throw Error(path + ": binary STL with no triangle");
       return;
     }
   }
+  const std::string data = readFileBytes(path, /*text=*/false);
   // Not a consistent binary file: ASCII, or a binary one whose count disagrees with its size.
   // VTK's reader takes a file with a few bytes other than printable text and line breaks for
   // binary, whatever its first word: any such file must be a consistent binary one.
@@ -57,9 +62,19 @@ void checkSTLFile(const std::string& path)
 
 void checkVTKXMLFile(const std::string& path)
 {
-  const std::string data = readFileBytes(path, /*text=*/false);
-  // The XML part ends where raw appended data begins.
-  const size_t xmlEnd = std::min(data.size(), data.find("<AppendedData"));
+  // The XML part ends where raw appended data begins: only that much is read here (the data
+  // behind it is VTK's reader's to read), the file's size from the file system.
+  const std::string marker = "<AppendedData";
+  size_t searched = 0; // each chunk searched once, from the marker's length before it
+  auto holdsMarker = [&](const std::string& bytes)
+  {
+    const size_t from = searched > marker.size() ? searched - marker.size() : 0;
+    searched = bytes.size();
+    return bytes.find(marker, from) != std::string::npos;
+  };
+  const std::string data = readFileStart(path, holdsMarker);
+  const std::uintmax_t fileSize = fileSizeOf(path);
+  const size_t xmlEnd = std::min(data.size(), data.find(marker));
   const std::string key = "NumberOf";
   for (size_t p = data.find(key); p < xmlEnd; p = data.find(key, p + 1))
   {
@@ -82,9 +97,9 @@ void checkVTKXMLFile(const std::string& path)
                        name == "NumberOfStrips" || name == "NumberOfPolys" ||
                        name == "NumberOfCells";
     const double bytesPer = name == "NumberOfPoints" ? 12.0 : cells ? 1.0 : 0.0;
-    if (static_cast<double>(value) * bytesPer / 1100.0 > data.size())
+    if (static_cast<double>(value) * bytesPer / 1100.0 > static_cast<double>(fileSize))
       throw Error(path + ": " + name + " is " + std::to_string(value) + ", more than the file's " +
-                  std::to_string(data.size()) + " bytes can hold (corrupt file)");
+                  std::to_string(fileSize) + " bytes can hold (corrupt file)");
   }
 }
 } // namespace clothtrack
