@@ -8,6 +8,7 @@
 #include <vtkPolyData.h>
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/reconstruction/SequenceCoverage.h>
 
 #include <nlohmann/json.hpp>
 
@@ -43,6 +44,7 @@ nlohmann::json reportJson(const std::string& cloud, const ReconstructionReport& 
           {"pieces", r.pieces},
           {"boundary_loops", r.boundaryLoops},
           {"genus", r.genus},
+          {"area_m2", r.area},
           {"mean_point_distance_m", r.meanPointDistance},
           {"unexplained_share", r.unexplainedShare},
           {"doubts", r.doubts},
@@ -103,6 +105,27 @@ nlohmann::json reconstructOne(const std::string& cloud, const std::string& mesh,
     std::fprintf(stderr, "\nwarning: %s: doubtful reconstruction: %s\n", cloud.c_str(),
                  doubt.c_str());
   return reportJson(cloud, report, seconds);
+}
+
+/// Frames whose surface is much smaller than the sequence's others (areaDoubts) get a
+/// `sequence_doubts` entry and a warning; returns how many of them had no doubt before.
+int doubtSmallFrames(nlohmann::json& frames)
+{
+  std::vector<double> areas;
+  for (const nlohmann::json& f : frames) areas.push_back(f.value("area_m2", 0.0));
+  const std::vector<std::string> doubts = areaDoubts(areas);
+  int newlyDoubtful = 0;
+  for (size_t k = 0; k < doubts.size(); ++k)
+  {
+    nlohmann::json& f = frames[k];
+    f["sequence_doubts"] = nlohmann::json::array();
+    if (doubts[k].empty()) continue;
+    f["sequence_doubts"].push_back(doubts[k]);
+    newlyDoubtful += f.value("doubts", nlohmann::json::array()).empty();
+    std::fprintf(stderr, "warning: %s: doubtful reconstruction: %s\n",
+                 f.value("cloud", std::string()).c_str(), doubts[k].c_str());
+  }
+  return newlyDoubtful;
 }
 } // namespace
 
@@ -169,6 +192,7 @@ std::vector<std::string> reconstructSequence(const std::vector<std::string>& clo
   }
   progress.finish();
   if (frames.empty()) throw Error(folder + ": no cloud of the sequence could be reconstructed");
+  doubtful += doubtSmallFrames(frames);
   writeTextAtomically((fs::path(folder) / "reconstruction.json").string(),
                       nlohmann::json{{"options", key},
                                      {"frames", frames},

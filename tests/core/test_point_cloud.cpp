@@ -10,6 +10,7 @@
 #include <clothtrack/mesh/Components.h>
 #include <clothtrack/mesh/Primitives.h>
 #include <clothtrack/pcd/PcdIO.h>
+#include <clothtrack/reconstruction/SequenceCoverage.h>
 #include <clothtrack/reconstruction/SurfaceReconstruction.h>
 
 #include <gtest/gtest.h>
@@ -255,4 +256,18 @@ TEST(SurfaceReconstruction, RefusesPointsThatFillAVolume)
               std::string::npos)
         << e.what();
   }
+}
+
+TEST(SequenceCoverage, DoubtsAFrameThatLostPartOfTheSubject)
+{
+  // Frame 3 shows two thirds of the subject; frame 4 was not reconstructed (area 0).
+  const std::vector<double> areas = {1.95, 2.0, 2.05, 1.3, 0.0, 1.98};
+  const std::vector<std::string> doubts = areaDoubts(areas);
+  ASSERT_EQ(doubts.size(), areas.size());
+  for (size_t k = 0; k < areas.size(); ++k)
+    EXPECT_EQ(doubts[k].empty(), k != 3) << k << ": " << doubts[k];
+  EXPECT_NE(doubts[3].find("66 % of the sequence's median"), std::string::npos) << doubts[3];
+  // A share of 0.6 lets it pass; two frames are too few to judge.
+  for (const std::string& d : areaDoubts(areas, 0.6)) EXPECT_TRUE(d.empty()) << d;
+  for (const std::string& d : areaDoubts({2.0, 0.5})) EXPECT_TRUE(d.empty()) << d;
 }

@@ -121,6 +121,7 @@ std::string percent(double share)
 void describeResult(const TriangleMesh& mesh, const Points& cleaned, ReconstructionReport& report)
 {
   report.vertices = mesh.numVertices();
+  report.area = surfaceArea(mesh);
   report.faces = mesh.numFaces();
   const MeshTopology topology = buildTopology(mesh);
   const Components components = connectedComponents(mesh, topology);

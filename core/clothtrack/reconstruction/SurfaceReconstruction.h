@@ -41,6 +41,7 @@ struct ReconstructionReport
   int pieces = 0;           ///< connected components of the result
   int boundaryLoops = 0;    ///< holes opened by the crop (and the capture)
   int genus = 0;            ///< of the largest piece
+  double area = 0;          ///< of the result, square metres
   /// Share of the cleaned points further than 1 cm from the result.
   double unexplainedShare = 0;
   /// Mean distance of the cleaned points to the result, metres.
