@@ -18,6 +18,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <random>
 
 namespace fs = std::filesystem;
@@ -32,6 +33,10 @@ struct CloudCapture
   bool enabled = false;
   DepthRig rig;
   std::string format = "pcd";
+  /// Where the rig stands: "sequence", the centre of the box holding every frame (a rig set up
+  /// for the capture volume), or "first", the first frame's centre.
+  std::string rigCentre = "sequence";
+  bool centred = false; ///< rig.centre is set
 };
 
 void addCloudOptions(po::options_description& options, CloudCapture& cloud)
@@ -46,7 +51,10 @@ void addCloudOptions(po::options_description& options, CloudCapture& cloud)
       "outliers", po::value(&cloud.rig.outliers)->default_value(0.01),
       "point clouds: stray points added, as a share of the points seen")(
       "cloud-format", po::value(&cloud.format)->default_value("pcd"),
-      "point clouds: pcd (binary_compressed), ply or xyz");
+      "point clouds: pcd (binary_compressed), ply or xyz")(
+      "rig-centre", po::value(&cloud.rigCentre)->default_value(cloud.rigCentre),
+      "point clouds: the point the cameras look at: sequence (the centre of the box holding "
+      "every frame, a rig set up for the capture volume) or first (the first frame's centre)");
 }
 
 void checkCloudOptions(const CloudCapture& cloud)
@@ -59,16 +67,36 @@ void checkCloudOptions(const CloudCapture& cloud)
     throw UsageError{"--outliers must be in [0, 1]"};
   if (cloud.format != "pcd" && cloud.format != "ply" && cloud.format != "xyz")
     throw UsageError{"--cloud-format must be pcd, ply or xyz"};
+  if (cloud.rigCentre != "sequence" && cloud.rigCentre != "first")
+    throw UsageError{"--rig-centre must be sequence or first"};
 }
 
-/// The cloud the rig sees of frame k, written as OUT/frames/frame_NNNN.<format>. The rig
-/// stands where the first frame's subject is.
+/// The centre of the box holding every frame of the sequence.
+Vec3 sequenceCentre(const std::vector<std::string>& frames, const FrameConventions& conventions)
+{
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 high = -low;
+  Progress progress("rig", static_cast<int>(frames.size()));
+  for (size_t k = 0; k < frames.size(); ++k)
+  {
+    const TriangleMesh truth = loadFrame(frames[k], conventions);
+    low = low.cwiseMin(truth.V.colwise().minCoeff().transpose());
+    high = high.cwiseMax(truth.V.colwise().maxCoeff().transpose());
+    progress.step(static_cast<int>(k + 1));
+  }
+  progress.finish();
+  return 0.5 * (low + high);
+}
+
+/// The cloud the rig sees of frame k, written as OUT/frames/frame_NNNN.<format>. Without a
+/// centre already set, the rig stands where the first frame's subject is.
 void captureCloudAndWrite(const std::string& output, long k, const TriangleMesh& truth,
                           CloudCapture& cloud, unsigned seed)
 {
-  if (cloud.rig.centre.isZero())
+  if (!cloud.centred)
     cloud.rig.centre =
         0.5 * (truth.V.colwise().minCoeff() + truth.V.colwise().maxCoeff()).transpose();
+  cloud.centred = true;
   DepthRig rig = cloud.rig;
   rig.seed = seed * 7919u + static_cast<unsigned>(k);
   writePointCloudFile((fs::path(output) / "frames" / (frameStem(k) + "." + cloud.format)).string(),
@@ -121,6 +149,11 @@ int runSimulateCapture(const Args& args)
 
   const std::vector<std::string> frames = listFrames(input);
   makeOutputFolders(output, {}, !cloud.enabled);
+  if (cloud.enabled && cloud.rigCentre == "sequence")
+  {
+    cloud.rig.centre = sequenceCentre(frames, conventions);
+    cloud.centred = true;
+  }
   std::mt19937 dropRng(static_cast<unsigned>(seed));
   std::uniform_real_distribution<double> uniform(0, 1);
   Progress progress("simulate-capture", static_cast<int>(frames.size()));
