@@ -36,7 +36,6 @@ struct CloudCapture
   /// Where the rig stands: "sequence", the centre of the box holding every frame (a rig set up
   /// for the capture volume), or "first", the first frame's centre.
   std::string rigCentre = "sequence";
-  bool centred = false; ///< rig.centre is set
 };
 
 void addCloudOptions(po::options_description& options, CloudCapture& cloud)
@@ -71,7 +70,7 @@ void checkCloudOptions(const CloudCapture& cloud)
     throw UsageError{"--rig-centre must be sequence or first"};
 }
 
-/// The centre of the box holding every frame of the sequence.
+/// The centre of the box holding every one of `frames`.
 Vec3 sequenceCentre(const std::vector<std::string>& frames, const FrameConventions& conventions)
 {
   Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity());
@@ -88,15 +87,10 @@ Vec3 sequenceCentre(const std::vector<std::string>& frames, const FrameConventio
   return 0.5 * (low + high);
 }
 
-/// The cloud the rig sees of frame k, written as OUT/frames/frame_NNNN.<format>. Without a
-/// centre already set, the rig stands where the first frame's subject is.
+/// The cloud the rig sees of frame k, written as OUT/frames/frame_NNNN.<format>.
 void captureCloudAndWrite(const std::string& output, long k, const TriangleMesh& truth,
-                          CloudCapture& cloud, unsigned seed)
+                          const CloudCapture& cloud, unsigned seed)
 {
-  if (!cloud.centred)
-    cloud.rig.centre =
-        0.5 * (truth.V.colwise().minCoeff() + truth.V.colwise().maxCoeff()).transpose();
-  cloud.centred = true;
   DepthRig rig = cloud.rig;
   rig.seed = seed * 7919u + static_cast<unsigned>(k);
   writePointCloudFile((fs::path(output) / "frames" / (frameStem(k) + "." + cloud.format)).string(),
@@ -149,11 +143,10 @@ int runSimulateCapture(const Args& args)
 
   const std::vector<std::string> frames = listFrames(input);
   makeOutputFolders(output, {}, !cloud.enabled);
-  if (cloud.enabled && cloud.rigCentre == "sequence")
-  {
-    cloud.rig.centre = sequenceCentre(frames, conventions);
-    cloud.centred = true;
-  }
+  if (cloud.enabled)
+    cloud.rig.centre = sequenceCentre(
+        cloud.rigCentre == "sequence" ? frames : std::vector<std::string>{frames.front()},
+        conventions);
   std::mt19937 dropRng(static_cast<unsigned>(seed));
   std::uniform_real_distribution<double> uniform(0, 1);
   Progress progress("simulate-capture", static_cast<int>(frames.size()));

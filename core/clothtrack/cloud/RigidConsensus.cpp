@@ -19,14 +19,19 @@ pcl::PointCloud<pcl::PointXYZ>::Ptr toCloud(const std::vector<Vec3>& points)
                                    static_cast<float>(p.z())));
   return cloud;
 }
+
+void requireSameLength(const std::vector<Vec3>& before, const std::vector<Vec3>& after)
+{
+  if (before.size() != after.size())
+    throw Error("rigid consensus: " + std::to_string(before.size()) + " points before but " +
+                std::to_string(after.size()) + " after");
+}
 } // namespace
 
 RigidConsensus rigidConsensus(const std::vector<Vec3>& before, const std::vector<Vec3>& after,
                               double tolerance, int maximumIterations)
 {
-  if (before.size() != after.size())
-    throw Error("rigid consensus: " + std::to_string(before.size()) + " points before but " +
-                std::to_string(after.size()) + " after");
+  requireSameLength(before, after);
   RigidConsensus out;
   out.inlier.assign(before.size(), false);
   if (before.size() < 3) return out;
@@ -59,9 +64,7 @@ RigidConsensus rigidConsensus(const std::vector<Vec3>& before, const std::vector
 std::vector<bool> locallyRigidPairs(const std::vector<Vec3>& before, const std::vector<Vec3>& after,
                                     double radius, double tolerance, int minimumPairs)
 {
-  if (before.size() != after.size())
-    throw Error("rigid consensus: " + std::to_string(before.size()) + " points before but " +
-                std::to_string(after.size()) + " after");
+  requireSameLength(before, after);
   std::vector<bool> kept(before.size(), true);
   for (size_t i = 0; i < before.size(); ++i)
   {

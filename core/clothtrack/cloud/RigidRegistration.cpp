@@ -8,7 +8,6 @@
 #include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/registration/gicp.h>
 
-#include <chrono>
 #include <string>
 
 namespace clothtrack
@@ -54,7 +53,6 @@ double overlap(const Cloud& moved, const Cloud::Ptr& target, double distance)
 RigidRegistration registerRigidly(const Points& source, const Points& target,
                                   const RigidRegistrationOptions& options)
 {
-  const auto start = std::chrono::steady_clock::now();
   const Cloud::Ptr from = thinned(source, options.voxelSize, "source");
   const Cloud::Ptr to = thinned(target, options.voxelSize, "target");
   pcl::GeneralizedIterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> gicp;
@@ -69,7 +67,6 @@ RigidRegistration registerRigidly(const Points& source, const Points& target,
   out.converged = gicp.hasConverged();
   out.motion.matrix() = gicp.getFinalTransformation().cast<double>();
   out.overlap = overlap(moved, to, options.inlierDistance);
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 } // namespace clothtrack

@@ -23,7 +23,6 @@ struct RigidRegistration
   /// Share of the (thinned) moved source points within inlierDistance of the target: how much
   /// of the motion is explained rigidly.
   double overlap = 0.0;
-  double seconds = 0.0;
 };
 
 /// Throws Error when either set has fewer than 10 points after thinning.

@@ -10,6 +10,18 @@
 
 namespace clothtrack
 {
+namespace
+{
+using OpenFile = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+
+OpenFile openForReading(const std::string& path)
+{
+  OpenFile file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
+  return file;
+}
+} // namespace
+
 void requireNonEmptyFile(const std::string& path)
 {
   namespace fs = std::filesystem;
@@ -21,9 +33,7 @@ void requireNonEmptyFile(const std::string& path)
 
 std::string readFileBytes(const std::string& path, bool text)
 {
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                             &std::fclose);
-  if (!file) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
+  const OpenFile file = openForReading(path);
   std::string bytes;
   // One read of the size the file has; a file that is not seekable (a pipe) or that grows while
   // read is taken in chunks to its end.
@@ -44,9 +54,7 @@ std::string readFileBytes(const std::string& path, bool text)
 std::string readFileStart(const std::string& path,
                           const std::function<bool(const std::string& bytes)>& enough)
 {
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                             &std::fclose);
-  if (!file) throw Error(path + ": cannot open file (" + std::strerror(errno) + ")");
+  const OpenFile file = openForReading(path);
   std::string bytes;
   char chunk[65536];
   for (size_t got; !enough(bytes) && (got = std::fread(chunk, 1, sizeof(chunk), file.get())) > 0;)

@@ -361,13 +361,15 @@ TriangleMesh readPLY(const std::string& path)
 
 bool plyDeclaresFaces(const std::string& path)
 {
-  // The header is all that is needed: the file's first 64 kB hold any real one.
-  std::ifstream in(path, std::ios::binary);
-  std::string head(1 << 16, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<size_t>(in.gcount()));
   try
   {
+    // The header is all that is needed: read up to its end, not the body behind it.
+    auto headerRead = [](const std::string& bytes)
+    {
+      const size_t end = bytes.find("end_header");
+      return end != std::string::npos && bytes.find('\n', end) != std::string::npos;
+    };
+    const std::string head = readFileStart(path, headerRead);
     const PlyHeader header = parsePlyHeader(path, head);
     return std::any_of(header.elements.begin(), header.elements.end(),
                        [](const Element& e) { return e.name == "face" && e.count > 0; });

@@ -34,7 +34,6 @@ bool parseDoubleSlowly(std::string_view token, double& value)
   const bool overflow = errno == ERANGE && std::abs(value) > 1.0;
   return endp != s.c_str() && *endp == '\0' && !overflow;
 }
-
 } // namespace
 
 bool parseDouble(std::string_view token, double& value)
@@ -47,5 +46,4 @@ bool parseDouble(std::string_view token, double& value)
   if (error == std::errc() && stop == end) return true;
   return parseDoubleSlowly(token, value);
 }
-
 } // namespace clothtrack
