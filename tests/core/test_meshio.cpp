@@ -1,7 +1,11 @@
 #include "TestUtil.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/io/FileBytes.h>
+#include <clothtrack/io/FileContents.h>
 #include <clothtrack/io/MeshIO.h>
+#include <clothtrack/io/PointCloudIO.h>
+#include <clothtrack/io/TextTokens.h>
 #include <clothtrack/mesh/Primitives.h>
 
 #include <gtest/gtest.h>
@@ -9,6 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <random>
 
 using namespace clothtrack;
 using clothtrack::test::scratchDir;
@@ -210,4 +215,107 @@ TEST(MeshIO, NumbersReadInPlaceAsStrtodReadsThem)
   EXPECT_EQ(off.V, obj.V);
   EXPECT_EQ(ply.V, obj.V);
   EXPECT_EQ(ply.F.row(0), Eigen::RowVector3i(0, 1, 2));
+}
+
+TEST(MeshIO, ObjLinesOfEveryShapeReadAsTheGeneralPathReadsThem)
+{
+  const std::string dir = scratchDir("meshio-shapes");
+  // CRLF endings, tabs, trailing spaces, vertex colours, a comment after a vertex, a face before
+  // the vertex it names, a quad, and no newline at the end.
+  const char* const shapes = "# made by hand\r\nf 1 2 5\r\nv 0 0 0 \r\n\tv\t1 0 0\t\n"
+                             "v 1 1 0 0.5 0.5 0.5\nv 0 1 0 # corner\nf 1/1 2/2 3/3 4/4  \n"
+                             "v 0.5 0.5 1";
+  const TriangleMesh mesh = readOBJ(writeText(dir + "/shapes.obj", shapes));
+  ASSERT_EQ(mesh.numVertices(), 5);
+  EXPECT_EQ(mesh.V.row(4), Eigen::RowVector3d(0.5, 0.5, 1));
+  EXPECT_EQ(mesh.V.row(2), Eigen::RowVector3d(1, 1, 0));
+  ASSERT_EQ(mesh.numFaces(), 3);
+  EXPECT_EQ(mesh.F.row(0), Eigen::RowVector3i(0, 1, 4));
+  EXPECT_EQ(mesh.F.row(2), Eigen::RowVector3i(0, 2, 3));
+  // A face naming a vertex past the last one is refused with its own line.
+  const std::string forward = writeText(dir + "/forward.obj", "f 1 2 4\nv 0 0 0\nv 1 0 0\nv 0 1 0");
+  expectError([&] { readOBJ(forward); }, forward + ":1:", "face index 4 out of range");
+}
+
+TEST(MeshIO, NumbersEndingAFileAreReadWithinIt)
+{
+  // A file's bytes have no terminating NUL, and the buffer they are read into may still hold the
+  // digits of a longer file read before: a number that ends a file ends with it. Each file ends in
+  // a number only strtod's reading takes ('+' or hexadecimal).
+  const std::string dir = scratchDir("meshio-end");
+  const std::string longer = writeText(dir + "/longer.txt", std::string(8192, '7'));
+  const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 +2";
+  FileContents{longer};
+  EXPECT_EQ(readOFF(writeText(dir + "/end.off", off)).F.row(0), Eigen::RowVector3i(0, 1, 2));
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                          "property double y\nproperty double z\nend_header\n0 0 0\n1 0 0\n"
+                          "0 1 0x1p-1";
+  FileContents{longer};
+  EXPECT_EQ(readPLYPoints(writeText(dir + "/end.ply", ply)).P(2, 2), 0.5);
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 +0.5\nf 1 2 +3";
+  FileContents{longer};
+  const TriangleMesh mesh = readOBJ(writeText(dir + "/end.obj", obj));
+  EXPECT_EQ(mesh.V(2, 2), 0.5);
+  EXPECT_EQ(mesh.F.row(0), Eigen::RowVector3i(0, 1, 2));
+}
+
+TEST(MeshIO, FileContentsHoldsWholeFiles)
+{
+  const std::string dir = scratchDir("meshio-contents");
+  const FileContents bom(writeText(dir + "/bom.obj", "\xEF\xBB\xBFv 0 0 0\n"));
+  EXPECT_EQ(bom.bytes(), "v 0 0 0\n");
+  const FileContents raw(dir + "/bom.obj", /*text=*/false);
+  EXPECT_EQ(raw.bytes().size(), 11u);
+  // Two files held at once in one thread: the second does not take the first's buffer.
+  const FileContents first(writeText(dir + "/first.off", "OFF\n"));
+  const FileContents second(writeText(dir + "/second.obj", "v 1 2 3\n"));
+  EXPECT_EQ(first.bytes(), "OFF\n");
+  EXPECT_EQ(second.bytes(), "v 1 2 3\n");
+  // /proc files claim a size of 0: read to their end.
+  const FileContents status("/proc/self/status");
+  EXPECT_NE(status.bytes().find("Name:"), std::string_view::npos);
+  expectError([&] { FileContents missing(dir + "/missing.obj"); }, dir + "/missing.obj",
+              "cannot open");
+}
+
+TEST(MeshIO, PlainDecimalsReadAsStrtodReadsThem)
+{
+  // The fast path for plain decimals against strtod, bit for bit, on random numbers of 1-18
+  // digits (past 15, and with an exponent, std::from_chars reads them).
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> digit(0, 9), length(0, 9), coin(0, 3);
+  int quick = 0;
+  for (int trial = 0; trial < 200000; ++trial)
+  {
+    std::string text = coin(random) == 0 ? "-" : "";
+    for (int k = length(random); k > 0; --k) text += static_cast<char>('0' + digit(random));
+    if (coin(random) != 0)
+    {
+      text += '.';
+      for (int k = length(random); k > 0; --k) text += static_cast<char>('0' + digit(random));
+    }
+    if (coin(random) == 0) text += "e-" + std::to_string(digit(random));
+    char* stop = nullptr;
+    const double expected = std::strtod(text.c_str(), &stop);
+    if (*stop != '\0' || stop == text.c_str()) continue; // not a number ("-", ".", "-.")
+    double value = 0;
+    const char* end = text.data() + text.size();
+    quick += readPlainDecimal(text.data(), end, value) != nullptr;
+    ASSERT_EQ(readNumberInPlace(text.data(), end, value), end) << text;
+    ASSERT_EQ(std::memcmp(&value, &expected, sizeof(double)), 0) << text;
+  }
+  EXPECT_GT(quick, 100000); // most took the fast path
+}
+
+TEST(MeshIO, ObjArraysGrowAndShrinkFromTheirEstimate)
+{
+  // The arrays are sized from the file's first 256 kB: a file whose records come later grows
+  // them, one whose records stop early has them trimmed.
+  const std::string dir = scratchDir("meshio-estimate");
+  const TriangleMesh mesh = torus(1.0, 0.25, 120, 80); // 9,600 vertices, 0.5 MB as OBJ
+  writeOBJ(dir + "/t.obj", mesh);
+  const std::string records = readFileBytes(dir + "/t.obj");
+  const std::string comments(300 << 10, '#');
+  expectSame(readOBJ(writeText(dir + "/late.obj", comments + "\n" + records)), mesh);
+  expectSame(readOBJ(writeText(dir + "/early.obj", records + comments + "\n")), mesh);
 }

@@ -1,8 +1,11 @@
 // Strict Stanford PLY reader: every size is checked against the file so that a truncated or
 // corrupt file is an error, not a crash.
 #include "FileBytes.h"
+#include "FileContents.h"
 #include "MeshIO.h"
 #include "PointCloudIO.h"
+#include "RowAppender.h"
+#include "TextTokens.h"
 #include <clothtrack/base/Error.h>
 
 #include <algorithm>
@@ -53,7 +56,7 @@ int typeSize(const std::string& t)
 }
 
 /// std::isspace in the C locale, without its call per character.
-bool isSpace(char c)
+bool isAsciiSpace(char c)
 {
   return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }
@@ -61,14 +64,13 @@ bool isSpace(char c)
 class Cursor
 {
 public:
-  Cursor(const std::string& path, const std::string& data, size_t pos, Format format)
+  Cursor(const std::string& path, std::string_view data, size_t pos, Format format)
       : path_(path), data_(data), pos_(pos), format_(format)
   {
   }
 
   double read(const std::string& type)
   {
-    // Integer types (char, uchar, short, ..., uint32) are read as integers first: faster.
     if (format_ == Format::Ascii) return readAscii(type[0] != 'f' && type[0] != 'd');
     const int size = typeSize(type);
     if (pos_ + size > data_.size())
@@ -101,39 +103,41 @@ private:
 
   double readAscii(bool integral)
   {
-    while (pos_ < data_.size() && isSpace(data_[pos_])) ++pos_;
-    if (pos_ >= data_.size()) throw Error(path_ + ": truncated file (ASCII data ends early)");
-    const char* start = data_.c_str() + pos_;
-    const char* last = data_.c_str() + data_.size();
+    const char* last = data_.data() + data_.size();
+    const char* start = data_.data() + pos_;
+    while (start < last && isAsciiSpace(*start)) ++start;
+    if (start == last) throw Error(path_ + ": truncated file (ASCII data ends early)");
+    // Integer types (char, uchar, short, ..., uint32) are read as integers first: faster.
+    double value = 0;
+    const char* stop = nullptr;
     if (integral)
     {
-      long long whole = 0;
-      const auto [stop, error] = std::from_chars(start, last, whole);
-      if (error == std::errc() && stop > start && (stop == last || isSpace(*stop)))
-      {
-        pos_ += stop - start;
-        return static_cast<double>(whole);
-      }
+      long whole = 0;
+      const auto [end, error] = std::from_chars(start, last, whole);
+      if (error == std::errc() && end > start) stop = end;
+      value = static_cast<double>(whole);
     }
-    // std::from_chars where it reads the whole word (several times faster, same rounding); what
-    // it does not (a '+' sign, hexadecimal, out of range) is strtod's, as before.
+    if (!stop) stop = readNumberInPlace(start, last, value);
+    if (!stop || (stop < last && !isAsciiSpace(*stop))) return readWord(start, last);
+    pos_ = static_cast<size_t>(stop - data_.data());
+    return value;
+  }
+
+  /// The word at `start` as strtod reads it (a '+' sign, hexadecimal), on a copy: the file's bytes
+  /// have no terminating NUL.
+  double readWord(const char* start, const char* last)
+  {
+    const char* wordEnd = start;
+    while (wordEnd < last && !isAsciiSpace(*wordEnd)) ++wordEnd;
     double value = 0;
-    const auto [stop, error] = std::from_chars(start, last, value);
-    if (error == std::errc() && stop > start && (stop == last || isSpace(*stop)))
-    {
-      pos_ += stop - start;
-      return value;
-    }
-    char* end = nullptr;
-    errno = 0;
-    value = std::strtod(start, &end);
-    if (end == start) throw Error(path_ + ": malformed number near byte " + std::to_string(pos_));
-    pos_ += end - start;
+    if (!parseDouble(std::string_view(start, static_cast<size_t>(wordEnd - start)), value))
+      throw Error(path_ + ": malformed number near byte " + std::to_string(start - data_.data()));
+    pos_ = static_cast<size_t>(wordEnd - data_.data());
     return value;
   }
 
   const std::string& path_;
-  const std::string& data_;
+  std::string_view data_;
   size_t pos_;
   Format format_;
 };
@@ -141,8 +145,7 @@ private:
 /// normals (nx ny nz) and colours (red green blue).
 struct PlyContents
 {
-  std::vector<double> coords;
-  std::vector<int> faces;
+  TriangleMesh mesh;
   std::vector<double> normals;
   std::vector<double> colours; // 0-255
   long numVertices = 0;
@@ -174,7 +177,7 @@ struct PlyHeader
   size_t bodyStart; ///< offset of the first byte after the header
 };
 
-PlyHeader parsePlyHeader(const std::string& path, const std::string& data)
+PlyHeader parsePlyHeader(const std::string& path, std::string_view data)
 {
   if (data.empty()) throw Error(path + ": empty file");
   if (data.compare(0, 3, "ply") != 0)
@@ -189,7 +192,7 @@ PlyHeader parsePlyHeader(const std::string& path, const std::string& data)
   Format format = Format::Ascii;
   bool haveFormat = false;
   std::vector<Element> elements;
-  std::istringstream header(data.substr(0, headerEnd));
+  std::istringstream header(std::string(data.substr(0, headerEnd)));
   std::string line;
   int lineNo = 0;
   while (std::getline(header, line))
@@ -244,11 +247,15 @@ PlyHeader parsePlyHeader(const std::string& path, const std::string& data)
 
 PlyContents readPLYContents(const std::string& path)
 {
-  const std::string data = readFileBytes(path);
+  const FileContents file(path);
+  const std::string_view data = file.bytes();
   const auto [format, elements, bodyStart] = parsePlyHeader(path, data);
   PlyContents contents;
-  std::vector<double>& coords = contents.coords;
-  std::vector<int>& faces = contents.faces;
+  Eigen::Index vertexCount = 0;
+  for (const Element& e : elements)
+    if (e.name == "vertex" && static_cast<size_t>(e.count) <= data.size()) vertexCount = e.count;
+  RowAppender<Points> coords(contents.mesh.V, vertexCount);
+  RowAppender<Triangles> faces(contents.mesh.F, 0);
   long& numVertices = contents.numVertices;
   bool haveVertices = false;
   Cursor cursor(path, data, bodyStart, format);
@@ -288,27 +295,29 @@ PlyContents readPLYContents(const std::string& path)
     {
       haveVertices = true;
       numVertices = e.count;
-      coords.reserve(3 * e.count);
       if (withNormals) contents.normals.reserve(3 * e.count);
       if (withColours) contents.colours.reserve(3 * e.count);
+    }
+    if (isFace) faces.reserve(faces.size() + e.count); // triangles mostly
+    // Where each property's value goes in a vertex record: position 0-2, normal 3-5, colour 6-8.
+    std::vector<int> slot(e.properties.size(), -1);
+    for (int k = 0; k < 3 && isVertex; ++k)
+    {
+      slot[xyz[k]] = k;
+      if (withNormals) slot[normal[k]] = 3 + k;
+      if (withColours) slot[colour[k]] = 6 + k;
     }
     std::vector<int> polygon;
     for (long i = 0; i < e.count; ++i)
     {
-      double point[3] = {0, 0, 0}, pointNormal[3] = {0, 0, 0}, pointColour[3] = {0, 0, 0};
+      double record[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
       for (size_t p = 0; p < e.properties.size(); ++p)
       {
         const Property& prop = e.properties[p];
         if (prop.countType.empty())
         {
           const double value = cursor.read(prop.type);
-          if (isVertex)
-            for (int k = 0; k < 3; ++k)
-            {
-              if (xyz[k] == static_cast<int>(p)) point[k] = value;
-              if (normal[k] == static_cast<int>(p)) pointNormal[k] = value;
-              if (colour[k] == static_cast<int>(p)) pointColour[k] = value * colourScale;
-            }
+          if (slot[p] >= 0) record[slot[p]] = value;
           continue;
         }
         const double n = cursor.read(prop.countType);
@@ -335,28 +344,27 @@ PlyContents readPLYContents(const std::string& path)
         {
           if (polygon.size() < 3)
             throw Error(path + ": face " + std::to_string(i) + " has fewer than 3 vertices");
-          for (size_t k = 1; k + 1 < polygon.size(); ++k)
-            faces.insert(faces.end(), {polygon[0], polygon[k], polygon[k + 1]});
+          addFan(polygon, faces);
         }
       }
       if (isVertex)
       {
-        coords.insert(coords.end(), point, point + 3);
-        if (withNormals)
-          contents.normals.insert(contents.normals.end(), pointNormal, pointNormal + 3);
-        if (withColours)
-          contents.colours.insert(contents.colours.end(), pointColour, pointColour + 3);
+        coords.add(record[0], record[1], record[2]);
+        if (withNormals) contents.normals.insert(contents.normals.end(), record + 3, record + 6);
+        for (int k = 6; k < 9 && withColours; ++k)
+          contents.colours.push_back(record[k] * colourScale);
       }
     }
   }
+  coords.finish();
+  faces.finish();
   return contents;
 }
 } // namespace
 
 TriangleMesh readPLY(const std::string& path)
 {
-  const PlyContents contents = readPLYContents(path);
-  return meshFromArrays(contents.coords, contents.faces);
+  return readPLYContents(path).mesh;
 }
 
 bool plyDeclaresFaces(const std::string& path)
@@ -382,7 +390,7 @@ bool plyDeclaresFaces(const std::string& path)
 
 PointCloud readPLYPoints(const std::string& path)
 {
-  const PlyContents contents = readPLYContents(path);
-  return cloudFromArrays(contents.coords, contents.normals, contents.colours);
+  PlyContents contents = readPLYContents(path);
+  return cloudFromArrays(std::move(contents.mesh.V), contents.normals, contents.colours);
 }
 } // namespace clothtrack

@@ -1,5 +1,5 @@
 #include "PointCloudIO.h"
-#include "FileBytes.h"
+#include "FileContents.h"
 #include "FrameList.h"
 #include "TextTokens.h"
 
@@ -14,12 +14,12 @@
 namespace clothtrack
 {
 
-PointCloud cloudFromArrays(const std::vector<double>& coords, const std::vector<double>& normals,
+PointCloud cloudFromArrays(Points positions, const std::vector<double>& normals,
                            const std::vector<double>& colours)
 {
-  const long n = static_cast<long>(coords.size() / 3);
+  const long n = static_cast<long>(positions.rows());
   PointCloud cloud;
-  cloud.P = Eigen::Map<const Points>(coords.data(), n, 3);
+  cloud.P = std::move(positions);
   if (static_cast<long>(normals.size()) == 3 * n && n > 0)
   {
     cloud.N = Eigen::Map<const Points>(normals.data(), n, 3);
@@ -40,7 +40,8 @@ PointCloud cloudFromArrays(const std::vector<double>& coords, const std::vector<
 
 PointCloud readXYZ(const std::string& path)
 {
-  const std::string data = readFileBytes(path);
+  const FileContents file(path);
+  const std::string_view data = file.bytes();
   std::vector<double> coords, normals;
   std::vector<std::string_view> tokens;
   size_t columns = 0;
@@ -56,22 +57,23 @@ PointCloud readXYZ(const std::string& path)
     tokenize(p, hash ? hash : lineEnd, tokens);
     p = lineEnd + 1;
     if (tokens.empty()) continue;
-    const std::string at = path + ":" + std::to_string(lineNo) + ": ";
+    auto at = [&] { return lineLocation(path, lineNo); };
     if (tokens.size() != 3 && tokens.size() != 6)
-      throw Error(at + "an XYZ line holds 3 (x y z) or 6 (x y z nx ny nz) numbers, not " +
+      throw Error(at() + "an XYZ line holds 3 (x y z) or 6 (x y z nx ny nz) numbers, not " +
                   std::to_string(tokens.size()));
     if (columns == 0) columns = tokens.size();
     if (tokens.size() != columns)
-      throw Error(at + std::to_string(tokens.size()) + " numbers where the first line had " +
+      throw Error(at() + std::to_string(tokens.size()) + " numbers where the first line had " +
                   std::to_string(columns));
     double values[6];
     for (size_t k = 0; k < tokens.size(); ++k)
       if (!parseDouble(tokens[k], values[k]))
-        throw Error(at + "'" + std::string(tokens[k]) + "' is not a number");
+        throw Error(at() + "'" + std::string(tokens[k]) + "' is not a number");
     coords.insert(coords.end(), values, values + 3);
     if (columns == 6) normals.insert(normals.end(), values + 3, values + 6);
   }
-  return cloudFromArrays(coords, normals, {});
+  const auto n = static_cast<Eigen::Index>(coords.size() / 3);
+  return cloudFromArrays(Eigen::Map<const Points>(coords.data(), n, 3), normals, {});
 }
 
 void writePLYPoints(const std::string& path, const PointCloud& cloud)

@@ -26,8 +26,8 @@ bool plyDeclaresFaces(const std::string& path);
 /// True for .xyz and .pcd files, and for a .ply file whose header declares no faces.
 bool isPointCloudFile(const std::string& path);
 
-/// A cloud from flat arrays: x y z per point; normals and colours (0-255) empty or 3 per point.
-PointCloud cloudFromArrays(const std::vector<double>& coords, const std::vector<double>& normals,
+/// A cloud from its positions and flat arrays of normals and colours (0-255), empty or 3 per point.
+PointCloud cloudFromArrays(Points positions, const std::vector<double>& normals,
                            const std::vector<double>& colours);
 
 /// Drops points with a non-finite coordinate (depth cameras mark missing pixels with NaN) and

@@ -36,6 +36,20 @@ bool parseDoubleSlowly(std::string_view token, double& value)
 }
 } // namespace
 
+std::string lineLocation(const std::string& path, int line)
+{
+  return path + ":" + std::to_string(line) + ": ";
+}
+
+bool parseIndex(std::string_view token, long& value)
+{
+  const char* begin = token.data();
+  const char* end = begin + token.size();
+  if (begin != end && *begin == '+' && end - begin > 1 && begin[1] != '-') ++begin;
+  const auto [stop, error] = std::from_chars(begin, end, value);
+  return error == std::errc() && stop != begin && (stop == end || *stop == '/');
+}
+
 bool parseDouble(std::string_view token, double& value)
 {
   // std::from_chars is several times faster than strtod and rounds the same; what it does not
