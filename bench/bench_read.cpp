@@ -6,6 +6,7 @@
 // each as MB/s over all files. The first pass warms the file cache and is not counted.
 #include "ctMeshConversion.h"
 
+#include <clothtrack/base/MemoryReuse.h>
 #include <clothtrack/io/FileBytes.h>
 
 #include <algorithm>
@@ -35,6 +36,7 @@ struct Totals
 
 int main(int argc, char** argv)
 {
+  keepFreedMemoryForReuse(); // as the app does
   std::vector<std::string> files;
   int repeat = 3;
   for (int i = 1; i < argc; ++i)

@@ -2,6 +2,7 @@
 #include "Commands.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/base/MemoryReuse.h>
 
 #include <vtkLogger.h>
 #include <vtkObject.h>
@@ -83,6 +84,7 @@ void printUsage(std::FILE* out)
 
 int main(int argc, char** argv)
 {
+  clothtrack::keepFreedMemoryForReuse();
   // VTK messages go to stderr as plain lines rather than to a window or a popup.
   vtkOutputWindow::GetInstance()->SetDisplayModeToAlwaysStdErr();
   // The logger would print each of them a second time, in colour, with a time stamp.
