@@ -321,7 +321,7 @@ PlyContents readPLYContents(const std::string& path)
           continue;
         }
         const double n = cursor.read(prop.countType);
-        if (n < 0 || n > 1e6)
+        if (!(n >= 0 && n <= 1e6)) // NaN too: a float count type reads one
           throw Error(path + ": corrupt list length " + std::to_string(n) + " in element '" +
                       e.name + "'");
         polygon.clear();
