@@ -319,3 +319,36 @@ TEST(MeshIO, ObjArraysGrowAndShrinkFromTheirEstimate)
   expectSame(readOBJ(writeText(dir + "/late.obj", comments + "\n" + records)), mesh);
   expectSame(readOBJ(writeText(dir + "/early.obj", records + comments + "\n")), mesh);
 }
+
+TEST(MeshIO, PlyBinaryReadsEveryScalarType)
+{
+  // Each property type moves the reader by its own size: a wrong size would shift every value after
+  // it. The skipped properties come between the coordinates.
+  std::string body;
+  auto put = [&body](auto value)
+  { body.append(reinterpret_cast<const char*>(&value), sizeof(value)); };
+  for (int i = 0; i < 3; ++i)
+  {
+    put(static_cast<int8_t>(-5));
+    put(0.25 + i);                      // x, double
+    put(static_cast<uint16_t>(7));      // skipped
+    put(static_cast<float>(-1.5f * i)); // y, float
+    put(static_cast<int32_t>(-9));      // skipped
+    put(static_cast<int16_t>(-3 * i));  // z, short
+    put(static_cast<uint32_t>(11));     // skipped
+    put(static_cast<uint8_t>(200));     // skipped
+  }
+  put(static_cast<uint16_t>(3));
+  for (uint32_t index : {2u, 0u, 1u}) put(index);
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty int8 a\n"
+      "property double x\nproperty ushort b\nproperty float y\nproperty int c\n"
+      "property int16 z\nproperty uint32 d\nproperty uchar e\nelement face 1\n"
+      "property list ushort uint vertex_indices\nend_header\n";
+  const std::string dir = scratchDir("meshio-plytypes");
+  const TriangleMesh mesh = readPLY(writeText(dir + "/types.ply", header + body));
+  ASSERT_EQ(mesh.numVertices(), 3);
+  EXPECT_EQ(mesh.V.row(2), Eigen::RowVector3d(2.25, -3.0, -6.0));
+  ASSERT_EQ(mesh.numFaces(), 1);
+  EXPECT_EQ(mesh.F.row(0), Eigen::RowVector3i(2, 0, 1));
+}

@@ -31,11 +31,50 @@ enum class Format
   BinaryBig
 };
 
+/// A PLY value type, resolved from its name once, when the header is read.
+enum class Scalar
+{
+  Int8,
+  UInt8,
+  Int16,
+  UInt16,
+  Int32,
+  UInt32,
+  Float32,
+  Float64,
+  Unknown
+};
+
+Scalar scalarNamed(const std::string& t)
+{
+  if (t == "char" || t == "int8") return Scalar::Int8;
+  if (t == "uchar" || t == "uint8") return Scalar::UInt8;
+  if (t == "short" || t == "int16") return Scalar::Int16;
+  if (t == "ushort" || t == "uint16") return Scalar::UInt16;
+  if (t == "int" || t == "int32") return Scalar::Int32;
+  if (t == "uint" || t == "uint32") return Scalar::UInt32;
+  if (t == "float" || t == "float32") return Scalar::Float32;
+  if (t == "double" || t == "float64") return Scalar::Float64;
+  return Scalar::Unknown;
+}
+
+int sizeOf(Scalar type)
+{
+  static constexpr int sizes[] = {1, 1, 2, 2, 4, 4, 4, 8, 0};
+  return sizes[static_cast<int>(type)];
+}
+
+bool isIntegral(Scalar type)
+{
+  return type < Scalar::Float32;
+}
+
 struct Property
 {
   std::string name;
-  std::string type;      // value type (list item type for lists)
-  std::string countType; // non-empty for a list
+  Scalar type = Scalar::Unknown; // value type (list item type for lists)
+  Scalar countType = Scalar::Unknown;
+  bool list = false;
 };
 
 struct Element
@@ -44,16 +83,6 @@ struct Element
   long count = 0;
   std::vector<Property> properties;
 };
-
-int typeSize(const std::string& t)
-{
-  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-  if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32")
-    return 4;
-  if (t == "double" || t == "float64") return 8;
-  return 0;
-}
 
 /// std::isspace in the C locale, without its call per character.
 bool isAsciiSpace(char c)
@@ -69,10 +98,10 @@ public:
   {
   }
 
-  double read(const std::string& type)
+  double read(Scalar type)
   {
-    if (format_ == Format::Ascii) return readAscii(type[0] != 'f' && type[0] != 'd');
-    const int size = typeSize(type);
+    if (format_ == Format::Ascii) return readAscii(isIntegral(type));
+    const int size = sizeOf(type);
     if (pos_ + size > data_.size())
       throw Error(path_ + ": truncated file (binary data ends early)");
     unsigned char bytes[8];
@@ -83,14 +112,25 @@ public:
     const bool hostLittle = *reinterpret_cast<const unsigned char*>(&one) == 1;
     if (little != hostLittle)
       for (int i = 0; i < size / 2; ++i) std::swap(bytes[i], bytes[size - 1 - i]);
-    if (type == "char" || type == "int8") return static_cast<int8_t>(bytes[0]);
-    if (type == "uchar" || type == "uint8") return bytes[0];
-    if (type == "short" || type == "int16") return as<int16_t>(bytes);
-    if (type == "ushort" || type == "uint16") return as<uint16_t>(bytes);
-    if (type == "int" || type == "int32") return as<int32_t>(bytes);
-    if (type == "uint" || type == "uint32") return as<uint32_t>(bytes);
-    if (type == "float" || type == "float32") return as<float>(bytes);
-    return as<double>(bytes);
+    switch (type)
+    {
+    case Scalar::Int8:
+      return static_cast<int8_t>(bytes[0]);
+    case Scalar::UInt8:
+      return bytes[0];
+    case Scalar::Int16:
+      return as<int16_t>(bytes);
+    case Scalar::UInt16:
+      return as<uint16_t>(bytes);
+    case Scalar::Int32:
+      return as<int32_t>(bytes);
+    case Scalar::UInt32:
+      return as<uint32_t>(bytes);
+    case Scalar::Float32:
+      return as<float>(bytes);
+    default:
+      return as<double>(bytes);
+    }
   }
 
 private:
@@ -141,6 +181,15 @@ private:
   size_t pos_;
   Format format_;
 };
+[[noreturn]] void throwIndexOutOfRange(const std::string& path, long face, double index,
+                                       long numVertices)
+{
+  char text[32]; // any double: the file's value may exceed every integer type
+  std::snprintf(text, sizeof(text), "%.17g", index);
+  throw Error(path + ": face " + std::to_string(face) + " uses vertex index " + text +
+              ", out of range (file has " + std::to_string(numVertices) + " vertices)");
+}
+
 /// What a PLY file holds for the core: positions and triangles, and per vertex the optional
 /// normals (nx ny nz) and colours (red green blue).
 struct PlyContents
@@ -159,8 +208,7 @@ void findProperties(const Element& e, const char* const (&names)[N], int (&index
   {
     index[k] = -1;
     for (size_t p = 0; p < e.properties.size(); ++p)
-      if (e.properties[p].countType.empty() && e.properties[p].name == names[k])
-        index[k] = static_cast<int>(p);
+      if (!e.properties[p].list && e.properties[p].name == names[k]) index[k] = static_cast<int>(p);
   }
 }
 
@@ -227,16 +275,14 @@ PlyHeader parsePlyHeader(const std::string& path, std::string_view data)
     {
       if (elements.empty()) throw Error(where + "property before any element");
       Property p;
-      std::string type;
+      std::string type, countType;
       words >> type;
-      if (type == "list")
-        words >> p.countType >> p.type >> p.name;
-      else
-      {
-        p.type = type;
-        words >> p.name;
-      }
-      if (!typeSize(p.type) || (!p.countType.empty() && !typeSize(p.countType)) || p.name.empty())
+      p.list = type == "list";
+      if (p.list) words >> countType >> type;
+      words >> p.name;
+      p.type = scalarNamed(type);
+      p.countType = p.list ? scalarNamed(countType) : Scalar::Unknown;
+      if (p.type == Scalar::Unknown || (p.list && p.countType == Scalar::Unknown) || p.name.empty())
         throw Error(where + "malformed property line");
       elements.back().properties.push_back(p);
     }
@@ -269,16 +315,13 @@ PlyContents readPLYContents(const std::string& path)
     const bool withNormals = isVertex && allFound(normal);
     const bool withColours = isVertex && allFound(colour);
     // Colours stored as floats are fractions of full intensity.
-    const double colourScale = withColours && (e.properties[colour[0]].type[0] == 'f' ||
-                                               e.properties[colour[0]].type[0] == 'd')
-                                   ? 255.0
-                                   : 1.0;
+    const double colourScale =
+        withColours && !isIntegral(e.properties[colour[0]].type) ? 255.0 : 1.0;
     int indexProperty = -1;
     for (size_t p = 0; p < e.properties.size(); ++p)
     {
       const auto& name = e.properties[p].name;
-      if (isFace && (name == "vertex_indices" || name == "vertex_index") &&
-          !e.properties[p].countType.empty())
+      if (isFace && (name == "vertex_indices" || name == "vertex_index") && e.properties[p].list)
         indexProperty = static_cast<int>(p);
     }
     if (isVertex && !allFound(xyz)) throw Error(path + ": PLY vertex element lacks x, y or z");
@@ -314,7 +357,7 @@ PlyContents readPLYContents(const std::string& path)
       for (size_t p = 0; p < e.properties.size(); ++p)
       {
         const Property& prop = e.properties[p];
-        if (prop.countType.empty())
+        if (!prop.list)
         {
           const double value = cursor.read(prop.type);
           if (slot[p] >= 0) record[slot[p]] = value;
@@ -331,12 +374,7 @@ PlyContents readPLYContents(const std::string& path)
           if (isFace && static_cast<int>(p) == indexProperty)
           {
             if (!haveVertices || !(index >= 0 && index < numVertices))
-            {
-              char text[32]; // any double: the file's value may exceed every integer type
-              std::snprintf(text, sizeof(text), "%.17g", index);
-              throw Error(path + ": face " + std::to_string(i) + " uses vertex index " + text +
-                          ", out of range (file has " + std::to_string(numVertices) + " vertices)");
-            }
+              throwIndexOutOfRange(path, i, index, numVertices);
             polygon.push_back(static_cast<int>(index));
           }
         }
