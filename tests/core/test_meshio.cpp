@@ -235,6 +235,9 @@ TEST(MeshIO, ObjLinesOfEveryShapeReadAsTheGeneralPathReadsThem)
   // A face naming a vertex past the last one is refused with its own line.
   const std::string forward = writeText(dir + "/forward.obj", "f 1 2 4\nv 0 0 0\nv 1 0 0\nv 0 1 0");
   expectError([&] { readOBJ(forward); }, forward + ":1:", "face index 4 out of range");
+  // A negative index counts back from the vertices before it.
+  const std::string back = writeText(dir + "/back.obj", "v 0 0 0\nv 1 0 0\nf -3 -2 -1\nv 0 1 0");
+  expectError([&] { readOBJ(back); }, back + ":3:", "2 vertices before it");
 }
 
 TEST(MeshIO, NumbersEndingAFileAreReadWithinIt)

@@ -80,7 +80,8 @@ FileContents::FileContents(const std::string& path, bool text)
     if (!reuse) own_.reset(new char[size]);
     char* into = reuse ? threadBuffer.bytes.get() : own_.get();
     bytes_ = std::string_view(into, readAll(file.fd, into, size, path));
-    threadBuffer.inUse |= holdsThreadBuffer_ = reuse; // once read: an error leaves it free
+    holdsThreadBuffer_ = reuse;
+    if (reuse) threadBuffer.inUse = true; // only once read: a read error leaves it free
   }
   if (text && bytes_.substr(0, 3) == "\xEF\xBB\xBF") bytes_.remove_prefix(3);
 }

@@ -97,10 +97,10 @@ ObjRecordCounts estimateObjRecords(std::string_view text)
           static_cast<Eigen::Index>(scale * faceLines) + 16};
 }
 
-[[noreturn]] void throwIndexOutOfRange(const std::string& location, long raw, long vertices)
+[[noreturn]] void throwIndexOutOfRange(const std::string& location, long raw,
+                                       const std::string& why)
 {
-  throw Error(location + "face index " + std::to_string(raw) + " out of range (file has " +
-              std::to_string(vertices) + " vertices)");
+  throw Error(location + "face index " + std::to_string(raw) + " out of range (" + why + ")");
 }
 } // namespace
 
@@ -124,15 +124,19 @@ TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
   int largestIndexLine = 0;
   auto resolve = [&](long raw)
   {
-    // Negative indices count back from the vertices read so far.
-    const long idx = raw > 0 ? raw - 1 : static_cast<long>(vertices.size()) + raw;
-    if (raw == 0 || idx < 0 || idx > std::numeric_limits<int>::max())
-      throwIndexOutOfRange(lineLocation(path, lineNo), raw, static_cast<long>(vertices.size()));
     if (raw > largestIndex)
     {
       largestIndex = raw;
       largestIndexLine = lineNo;
     }
+    if (raw > 0) // beyond any int: refused at the end, as beyond the vertex count
+      return raw <= std::numeric_limits<int>::max() ? static_cast<int>(raw - 1) : 0;
+    if (raw == 0) throwIndexOutOfRange(lineLocation(path, lineNo), raw, "indices start at 1");
+    // Negative indices count back from the vertices read so far.
+    const long idx = static_cast<long>(vertices.size()) + raw;
+    if (idx < 0)
+      throwIndexOutOfRange(lineLocation(path, lineNo), raw,
+                           std::to_string(vertices.size()) + " vertices before it");
     return static_cast<int>(idx);
   };
   auto addFace = [&]()
@@ -203,7 +207,7 @@ TriangleMesh readOBJ(const std::string& path, const std::string& onlyGroup)
   }
   if (largestIndex > vertices.size())
     throwIndexOutOfRange(lineLocation(path, largestIndexLine), largestIndex,
-                         static_cast<long>(vertices.size()));
+                         "file has " + std::to_string(vertices.size()) + " vertices");
   vertices.finish();
   triangles.finish();
   return mesh;

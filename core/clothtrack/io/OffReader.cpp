@@ -30,8 +30,7 @@ public:
         ++line_;
       else if (*p_ == '#')
       {
-        const void* eol = std::memchr(p_, '\n', end_ - p_);
-        p_ = eol ? static_cast<const char*>(eol) : end_;
+        skipRestOfLine();
         continue;
       }
       else if (!isSpace(*p_))
@@ -65,7 +64,7 @@ public:
   }
   /// The line of the word last returned.
   int line() const { return wordLine_; }
-  /// Skips what is left of the current line (an OFF face's optional colour values).
+  /// Skips what is left of the current line (a comment, an OFF face's optional colour values).
   void skipRestOfLine()
   {
     const void* eol = std::memchr(p_, '\n', end_ - p_);
