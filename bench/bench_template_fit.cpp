@@ -250,7 +250,7 @@ int run(Sequence& s, const std::vector<std::string>& variants, const std::string
         };
       const auto fitStart = std::chrono::steady_clock::now();
       SequenceFitHooks hooks;
-      hooks.frame = [&](int k) -> const TriangleMesh& { return s.captures[k]; };
+      hooks.frame = [&](int k) { return borrowedFrame(s.captures[k]); };
       hooks.targets = [&](int k) { return truthTargets.empty() ? &targets[k] : &truthTargets[k]; };
       hooks.start = predict;
       const auto fits = fitTemplateSequence(templ, j, frames, hooks, v.options);

@@ -252,7 +252,7 @@ int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** i
     std::vector<int> all(n);
     for (int k = 0; k < n; ++k) all[k] = k;
     correspondFrames(
-        patches, chosen, all, [&](int k) -> const TriangleMesh& { return in.frames[k]; },
+        patches, chosen, all, [&](int k) { return borrowedFrame(in.frames[k]); },
         [&](int k) -> const std::vector<OrientedSurfacePoint>& { return in.landmarks[k]; },
         [&](int k, FrameCorrespondence&& c) { results[k] = std::move(c); },
         [this](double done)

@@ -333,7 +333,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     std::vector<TriangleMesh> frames(n);
     for (int k = 0; k < n; ++k) frames[k] = frameMesh(sequence, k);
     SequenceFitHooks hooks;
-    hooks.frame = [&](int k) -> const TriangleMesh& { return frames[k]; };
+    hooks.frame = [&](int k) { return borrowedFrame(frames[k]); };
     // Correspondences are converted when their turn comes; only the current one is held.
     VertexTargets targets;
     hooks.targets = [&](int k) -> const VertexTargets*
@@ -357,7 +357,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
         landmarks.push_back(landmarkSurfacePoints(
             vtkPolyData::SafeDownCast(landmarkBlocks->GetBlock(static_cast<unsigned>(k))),
             frames[k].numFaces(), "landmarks of " + frameName(sequence->GetBlock(k), k)));
-      hooks.start = landmarkStartPrediction([&](int k) -> const TriangleMesh& { return frames[k]; },
+      hooks.start = landmarkStartPrediction([&](int k) { return borrowedFrame(frames[k]); },
                                             [&](int k) -> const std::vector<OrientedSurfacePoint>&
                                             { return landmarks[k]; },
                                             this->Prediction);

@@ -126,6 +126,9 @@ void addRunOptions(po::options_description& options, AlignSettings& s)
       "threads (0: all cores)")("skip-bad-frames", po::bool_switch(&s.skipBadFrames),
                                 "leave out unreadable frames with a warning instead of stopping")(
       "no-report", po::bool_switch(&s.noReport), "skip the plots, renders and report.html")(
+      "frame-memory", po::value(&s.frameMemoryMB)->default_value(s.frameMemoryMB),
+      "MB of frames kept in memory between uses (input and ground truth each); the rest are read "
+      "again from cleaned copies in the work folder, so memory does not grow with the length")(
       "maximum-truth-distance,truth-distance",
       po::value(&s.truth.maximumTruthDistance)->default_value(s.truth.maximumTruthDistance),
       "template vertices further than this from the ground truth have no error (m; also "
@@ -143,6 +146,7 @@ void check(const AlignSettings& s)
   const TemplateFitOptions& fit = s.fit;
   const PatchCorrespondenceOptions& patches = s.patches;
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
+  if (!(s.frameMemoryMB >= 0)) throw UsageError{"--frame-memory must be 0 or more (MB)"};
   if (s.factorBackend != "block" && s.factorBackend != "cholmod")
     throw UsageError{"--factor-backend must be block or cholmod (got '" + s.factorBackend + "')"};
   if (!factorBackendAvailable(s.fit.factorBackend))

@@ -54,6 +54,10 @@ struct AlignSettings
   bool registerFrames = false;
   bool skipBadFrames = false;
   bool noReport = false;
+  /// Megabytes of frames (input and ground truth each) kept in memory between their uses; past
+  /// it, frames are read again from cleaned copies in the work folder. Peak memory then no
+  /// longer grows with the sequence's length.
+  double frameMemoryMB = 128;
 
   /// The body fit gives the landmarks (correspondences, start prediction) and the poses that
   /// choose the template; when none of these is wanted, it is skipped.

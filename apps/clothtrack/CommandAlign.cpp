@@ -3,6 +3,7 @@
 //   OUT/metrics.json             timings, memory and, with --ground-truth, the errors
 //   OUT/work/                    intermediate results: a run that was stopped resumes from them
 #include "AlignCache.h"
+#include "AlignInput.h"
 #include "AlignOptions.h"
 #include "AlignedOutput.h"
 #include "BackgroundWriter.h"
@@ -62,36 +63,6 @@ double peakMemoryMB()
   return usage.ru_maxrss / 1024.0; // kilobytes on Linux
 }
 
-/// "A:B" (either end may be empty) -> [begin, end) of `count` frames.
-std::pair<int, int> frameRange(const std::string& spec, int count)
-{
-  if (spec.empty()) return {0, count};
-  const auto colon = spec.find(':');
-  if (colon == std::string::npos) throw UsageError{"--frames must be A:B (got '" + spec + "')"};
-  auto number = [&](const std::string& text, int fallback)
-  {
-    if (text.empty()) return fallback;
-    size_t used = 0;
-    int value = 0;
-    try
-    {
-      value = std::stoi(text, &used);
-    }
-    catch (const std::exception&)
-    {
-      used = 0;
-    }
-    if (used != text.size() || value < 0)
-      throw UsageError{"--frames must be A:B with frame numbers >= 0 (got '" + spec + "')"};
-    return value;
-  };
-  const int begin = number(spec.substr(0, colon), 0);
-  const int end = std::min(count, number(spec.substr(colon + 1), count));
-  if (begin >= end)
-    throw UsageError{"--frames " + spec + " selects no frame of the " + std::to_string(count)};
-  return {begin, end};
-}
-
 /// Whether the JSON file at `path` holds `key`.
 bool sameKey(const fs::path& path, const nlohmann::json& key)
 {
@@ -106,23 +77,6 @@ bool sameKey(const fs::path& path, const nlohmann::json& key)
     return false;
   }
 }
-
-/// The frames of a run and what came with them.
-struct Input
-{
-  std::vector<std::string> files, truthFiles;
-  std::vector<int> frameNumber; ///< index in the full input list
-  std::vector<TriangleMesh> frames, truth;
-  std::optional<MarkerTrajectories> markers;
-  std::vector<FrameJump> jumps; ///< frames whose size or place breaks with the others (warned)
-  int count() const { return static_cast<int>(frames.size()); }
-  std::vector<const TriangleMesh*> pointers() const
-  {
-    std::vector<const TriangleMesh*> out;
-    for (const TriangleMesh& f : frames) out.push_back(&f);
-    return out;
-  }
-};
 
 /// Everything a run shares between its stages.
 struct Run
@@ -142,7 +96,8 @@ struct Run
   int verticesWithTruth = 0;
   int reusedCorrespondences = 0; ///< frames whose correspondences an earlier run left
   int reusedLandmarks = 0;       ///< frames whose body fit and landmarks an earlier run left
-  const TriangleMesh& templateMesh() const { return input.frames[templateFrame]; }
+  FramePtr templateHeld;         ///< the template frame, held for the whole run
+  const TriangleMesh& templateMesh() const { return *templateHeld; }
 };
 
 /// Removes the partial files (NAME.part, renamed to NAME once complete) that a run killed while
@@ -162,134 +117,6 @@ void removeLeftoverParts(const std::vector<fs::path>& folders)
   }
   if (removed > 0)
     std::fprintf(stderr, "removed %d partial files left by an interrupted run\n", removed);
-}
-
-/// Refuses a frame whose size says it is in another unit (leaves it out with --skip-bad-frames)
-/// and warns about frames whose size or place jumps otherwise.
-void checkFrameJumps(Input& in, bool skipBadFrames)
-{
-  in.jumps = frameJumps(in.pointers());
-  std::vector<FrameJump> kept;
-  for (auto jump = in.jumps.rbegin(); jump != in.jumps.rend(); ++jump)
-  {
-    const int k = jump->frame;
-    const std::string line = in.files[k] + ": " + jump->problem;
-    if (!jump->refused)
-    {
-      kept.insert(kept.begin(), *jump);
-      continue;
-    }
-    if (!skipBadFrames)
-      throw UsageError{line + ": convert it, or leave it out with --skip-bad-frames"};
-    std::fprintf(stderr, "warning: %s (frame left out)\n", line.c_str());
-    in.frames.erase(in.frames.begin() + k);
-    in.files.erase(in.files.begin() + k);
-    in.frameNumber.erase(in.frameNumber.begin() + k);
-    if (!in.truthFiles.empty()) in.truthFiles.erase(in.truthFiles.begin() + k);
-    for (FrameJump& later : kept) --later.frame;
-  }
-  in.jumps = kept;
-  for (const FrameJump& jump : in.jumps)
-    std::fprintf(stderr, "warning: %s: %s\n", in.files[jump.frame].c_str(), jump.problem.c_str());
-}
-
-/// Refuses a ground truth of another scale than the input; warns once when it lies elsewhere.
-void checkGroundTruth(const Input& in)
-{
-  bool warned = false;
-  for (int k = 0; k < static_cast<int>(in.truth.size()); ++k)
-  {
-    bool refused = false;
-    const std::string problem = groundTruthMismatch(in.frames[k], in.truth[k], refused);
-    if (refused) throw UsageError{in.truthFiles[k] + ": " + problem + " (" + in.files[k] + ")"};
-    if (!problem.empty() && !warned)
-      std::fprintf(stderr, "warning: %s: %s (%s)\n", in.truthFiles[k].c_str(), problem.c_str(),
-                   in.files[k].c_str());
-    warned = warned || !problem.empty();
-  }
-}
-
-/// Says so when frames are missing from a numbered sequence: the motion jumps there. Files listed
-/// in another order than their numbers (a list file) are a chosen set of poses: nothing is missing.
-void warnAboutGaps(const std::vector<std::string>& files)
-{
-  for (size_t k = 1; k < files.size(); ++k)
-    if (frameNumberFromName(files[k]) <= frameNumberFromName(files[k - 1])) return;
-  for (size_t k = 1; k < files.size(); ++k)
-  {
-    const long before = frameNumberFromName(files[k - 1]), after = frameNumberFromName(files[k]);
-    if (before >= 0 && after > before + 1)
-      std::fprintf(stderr, "warning: frames %ld to %ld are missing between %s and %s\n", before + 1,
-                   after - 1, fs::path(files[k - 1]).filename().c_str(),
-                   fs::path(files[k]).filename().c_str());
-  }
-}
-
-/// Point clouds among the frames in [begin, end) are reconstructed into OUT/reconstructed first
-/// (in metres, Y up); the list then names the meshes ("" for a cloud that could not be).
-bool reconstructClouds(const AlignSettings& s, std::vector<std::string>& files, int begin, int end)
-{
-  if (!std::any_of(files.begin() + begin, files.begin() + end, isPointCloudFile)) return false;
-  const std::vector<std::string> clouds(files.begin() + begin, files.begin() + end);
-  for (const auto& file : clouds)
-    if (!isPointCloudFile(file))
-      throw UsageError{file + ": a mesh among point clouds; give a sequence of one kind"};
-  ReconstructSettings settings{s.reconstruction, toConventions(s.sequence), s.skipBadFrames};
-  const auto meshes =
-      reconstructSequence(clouds, (fs::path(s.output) / "reconstructed").string(), settings, begin);
-  std::copy(meshes.begin(), meshes.end(), files.begin() + begin);
-  return true;
-}
-
-Input readInput(const AlignSettings& s)
-{
-  FrameConventions conventions = toConventions(s.sequence);
-  std::vector<std::string> allFiles = listFrames(s.input);
-  const auto [begin, end] = frameRange(s.frameSpec, static_cast<int>(allFiles.size()));
-  const bool fromClouds = reconstructClouds(s, allFiles, begin, end);
-  const FrameConventions truthConventions = conventions;
-  if (fromClouds) conventions = FrameConventions{};
-  std::vector<std::string> allTruth;
-  if (!s.truthInput.empty())
-  {
-    allTruth = listFrames(s.truthInput);
-    if (allTruth.size() != allFiles.size())
-      throw UsageError{s.truthInput + ": " + std::to_string(allTruth.size()) +
-                       " ground-truth frames for " + std::to_string(allFiles.size()) +
-                       " input frames"};
-  }
-  Input in;
-  Progress progress("reading", end - begin);
-  for (int k = begin; k < end; ++k)
-  {
-    try
-    {
-      if (allFiles[k].empty()) throw Error("frame " + std::to_string(k) + ": no reconstruction");
-      std::vector<std::string> warnings;
-      in.frames.push_back(loadFrame(allFiles[k], conventions, &warnings));
-      for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-      in.files.push_back(fs::absolute(allFiles[k]).string());
-      in.frameNumber.push_back(k);
-      if (!allTruth.empty()) in.truthFiles.push_back(allTruth[k]);
-    }
-    catch (const Error& e)
-    {
-      if (!s.skipBadFrames) throw;
-      std::fprintf(stderr, "warning: %s (frame left out)\n", e.what());
-    }
-    progress.step(k - begin + 1);
-  }
-  progress.finish();
-  warnAboutGaps(in.files);
-  checkFrameJumps(in, s.skipBadFrames);
-  if (in.count() < 2) throw UsageError{s.input + ": at least two readable frames are needed"};
-  for (const std::string& w : subjectWarnings(in.frames.front()))
-    std::fprintf(stderr, "warning: %s: %s\n", in.files.front().c_str(), w.c_str());
-  in.truth = loadGroundTruth(in.truthFiles, truthConventions);
-  checkGroundTruth(in);
-  // Markers are read now, so that a bad file stops the run before the long stages.
-  if (!s.markersPath.empty()) in.markers = selectedMarkers(s.markersPath, in.frameNumber);
-  return in;
 }
 
 /// Every body-fit and transfer option, so that landmarks of other options (an older release's
@@ -353,7 +180,7 @@ void runBodyStage(Run& run)
     BodyModel ownModel;
     const BodyModel& model = bodyModel(s.modelPath, ownModel);
     Progress progress("body-fit", n);
-    BodyStageResult result = fitBodyAndLandmarks(model, run.input.pointers(), options,
+    BodyStageResult result = fitBodyAndLandmarks(model, *run.input.frames, options,
                                                  [&](double done)
                                                  {
                                                    progress.step(static_cast<int>(n * done));
@@ -389,11 +216,12 @@ void runTemplateStage(Run& run)
   if (run.templateFrame < 0)
   {
     const TemplateSelection chosen =
-        chooseTemplateFrame(run.input.pointers(), s.selection, restPoseDistances(run.body.body));
+        chooseTemplateFrame(*run.input.frames, s.selection, restPoseDistances(run.body.body));
     run.templateFrame = chosen.chosen;
     run.templateDecidedBy = templateCriterionName(chosen.decidedBy);
   }
   const int j = run.templateFrame;
+  run.templateHeld = run.input.frame(j);
   std::fprintf(stderr, "template: frame %d (%s), %d vertices, %s%s\n", j,
                fs::path(run.input.files[j]).filename().c_str(), run.templateMesh().numVertices(),
                s.forcedTemplate >= 0 ? "set by --template" : "chosen by ",
@@ -473,8 +301,7 @@ void runCorrespondenceStage(Run& run, const AlignedOutput& output)
   const int count = static_cast<int>(missing.size());
   Progress progress("correspond", count);
   correspondFrames(
-      patches, run.templateFrame, missing,
-      [&](int k) -> const TriangleMesh& { return run.input.frames[k]; },
+      patches, run.templateFrame, missing, [&](int k) { return run.input.frame(k); },
       [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; },
       [&](int k, FrameCorrespondence&& c)
       { writeTargets(targetPath(run, k).string(), run.input.files[k], vertexTargets(c)); },
@@ -521,16 +348,21 @@ void runFitStage(Run& run, const AlignedOutput& output)
   const Input& in = run.input;
   const int n = in.count(), j = run.templateFrame;
   std::optional<TruthAnchors> anchors;
-  if (!in.truth.empty())
-    anchors = anchorToTruth(run.templateMesh().V, in.truth[j], s.truth.maximumTruthDistance);
+  if (in.truth)
+    anchors =
+        anchorToTruth(run.templateMesh().V, *in.truth->frame(j), s.truth.maximumTruthDistance);
   run.verticesWithTruth = anchors ? anchors->count() : 0;
   run.errors.assign(n, Eigen::VectorXd());
   auto errorsOf = [&](int k, const Points& positions)
-  { run.errors[k] = anchors ? vertexErrors(positions, in.truth[k], *anchors) : Eigen::VectorXd(); };
+  {
+    run.errors[k] =
+        anchors ? vertexErrors(positions, *in.truth->frame(k), *anchors) : Eigen::VectorXd();
+  };
 
   VertexTargets targets;
   SequenceFitHooks hooks;
-  hooks.frame = [&](int k) -> const TriangleMesh& { return in.frames[k]; };
+  hooks.frame = [&](int k) { return in.frame(k); };
+  hooks.keepFits = false; // written as they come; evaluate reads them back
   if (s.fit.useCorrespondence)
     hooks.targets = [&](int k) -> const VertexTargets*
     {
@@ -544,7 +376,7 @@ void runFitStage(Run& run, const AlignedOutput& output)
     };
   if (s.prediction.predictRadius > 0)
     hooks.start = landmarkStartPrediction(
-        [&](int k) -> const TriangleMesh& { return in.frames[k]; },
+        [&](int k) { return in.frame(k); },
         [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; }, s.prediction);
   if (static_cast<int>(run.body.body.frames.size()) == n)
   {
@@ -555,7 +387,12 @@ void runFitStage(Run& run, const AlignedOutput& output)
   if (s.startFromBody && run.posedByBody)
     hooks.start = bodyStartPrediction(run.posedByBody, std::move(hooks.start));
   if (s.retryDoubtful) judgeFits(hooks, run.templateMesh(), {}, run.posedByBody);
-  hooks.resumed = [&](int k) { return output.earlier(in.frameNumber[k]); };
+  hooks.resumed = [&](int k)
+  {
+    std::optional<FrameFit> earlier = output.earlier(in.frameNumber[k]);
+    if (earlier) errorsOf(k, earlier->positions);
+    return earlier;
+  };
   BackgroundWriter writer; // finishes before what its tasks refer to goes
   keepSolverStates(run, writer, hooks);
   hooks.fitted = [&](int k, const FrameFit& fit)
@@ -583,8 +420,6 @@ void runFitStage(Run& run, const AlignedOutput& output)
   writer.finish();
   fs::remove_all(run.out / "fit_state"); // every frame is written: no fit continues from these
   progress.finish();
-  for (int k = 0; k < n; ++k)
-    if (run.fits[k].resumed) errorsOf(k, run.fits[k].positions);
   output.writeCollection(in.frameNumber, s.sequence.fps);
 }
 
@@ -640,8 +475,20 @@ void addConfidenceMetrics(nlohmann::json& metrics, const SequenceQuality& qualit
                  quality.doubtfulFrames.size() - shown);
 }
 
+/// Frame k's fitted vertices: the fit keeps only the template frame's (SequenceFitHooks::keepFits),
+/// the others are read back from OUT/aligned.
+Points alignedPositions(const Run& run, const AlignedOutput& output, int k)
+{
+  if (run.fits[k].positions.rows() > 0) return run.fits[k].positions;
+  std::optional<FrameFit> fit = output.earlier(run.input.frameNumber[k]);
+  if (!fit)
+    throw Error(output.framePath(run.input.frameNumber[k]).string() +
+                ": the aligned frame vanished or was damaged during the run");
+  return std::move(fit->positions);
+}
+
 /// metrics.json: inputs, template, errors (with a ground truth), quality without one, timings.
-nlohmann::json evaluate(const Run& run)
+nlohmann::json evaluate(const Run& run, const AlignedOutput& output)
 {
   const AlignSettings& s = run.settings;
   const Input& in = run.input;
@@ -679,17 +526,17 @@ nlohmann::json evaluate(const Run& run)
   std::vector<double> landmarkCounts;
   for (const auto& l : run.body.landmarks) landmarkCounts.push_back(static_cast<double>(l.size()));
   metrics["landmarks_per_frame"] = landmarkCounts;
-  if (!in.truth.empty())
-    addVertexErrorMetrics(metrics, run.errors, j, s.truthInput, run.verticesWithTruth);
+  if (in.truth) addVertexErrorMetrics(metrics, run.errors, j, s.truthInput, run.verticesWithTruth);
   if (in.markers)
   {
     std::vector<Points> positions;
-    for (const FrameFit& f : run.fits) positions.push_back(f.positions);
+    for (int k = 0; k < n; ++k) positions.push_back(alignedPositions(run, output, k));
     addMarkerMetrics(metrics, positions, *in.markers, j, s.markersPath);
   }
   // Without ground truth too: how well the result covers each frame, and how smoothly it moves.
-  const SequenceQuality quality =
-      fittedSequenceQuality(run.fits, run.templateMesh().F, in.pointers(), j, {}, run.posedByBody);
+  const SequenceQuality quality = fittedSequenceQuality(
+      run.fits, run.templateMesh().F, *in.frames,
+      [&](int k) { return alignedPositions(run, output, k); }, j, {}, run.posedByBody);
   metrics["per_frame_surface_distance_m"] = quality.surfaceDistance;
   metrics["per_frame_coverage_distance_m"] = quality.coverageDistance;
   metrics["mean_surface_distance_m"] = quality.meanSurfaceDistance;
@@ -713,6 +560,10 @@ void addTimings(nlohmann::json& metrics, const Run& run, double total)
   metrics["seconds_per_fitted_frame"] = fitted ? fittedSeconds / fitted : 0.0;
   metrics["stage_seconds"] = run.stageSeconds;
   metrics["peak_rss_mb"] = peakMemoryMB();
+  // Streaming: how often frames were read after the first time, and whether from the work folder.
+  metrics["frame_memory_mb"] = run.settings.frameMemoryMB;
+  metrics["frames_kept_on_disk"] = run.input.spilled;
+  metrics["frame_reads"] = run.input.frames->loads();
 }
 
 void printSummary(const Run& run, const nlohmann::json& metrics, double total)
@@ -733,6 +584,15 @@ void printSummary(const Run& run, const nlohmann::json& metrics, double total)
   std::fflush(stdout);
 }
 
+/// The cleaned frames a long run kept in the work folder (AlignInput.h): a next run reads its
+/// input again anyway.
+void removeFrameCopies(const Run& run)
+{
+  std::error_code ignored;
+  fs::remove_all(run.work / "frames", ignored);
+  fs::remove_all(run.work / "truth", ignored);
+}
+
 /// Runs `stage` and records its wall time under `name`.
 template <class Stage> void timed(Run& run, const char* name, const Stage& stage)
 {
@@ -750,9 +610,9 @@ int alignCommand(const Args& args, AlignMode mode)
   const AlignSettings& s = run.settings;
   setThreadCount(s.threads);
   const auto start = Clock::now();
-  timed(run, "read", [&] { run.input = readInput(s); });
   run.out = s.output;
   run.work = s.workDir.empty() ? run.out / "work" : fs::path(s.workDir);
+  timed(run, "read", [&] { run.input = readInput(s, run.work); });
   fs::create_directories(run.work);
   fs::create_directories(run.out);
   removeLeftoverParts({run.out, run.work});
@@ -766,15 +626,17 @@ int alignCommand(const Args& args, AlignMode mode)
     std::printf("landmarks and correspondences of %d frames (template frame %d) in %s; "
                 "'clothtrack fit' with the same input and work folder fits the template\n",
                 run.input.count(), run.templateFrame, run.work.c_str());
+    removeFrameCopies(run);
     return 0;
   }
   timed(run, "fit", [&] { runFitStage(run, output); });
   nlohmann::json metrics;
-  timed(run, "evaluate", [&] { metrics = evaluate(run); });
+  timed(run, "evaluate", [&] { metrics = evaluate(run, output); });
   const double total = since(start);
   addTimings(metrics, run, total);
   writeTextAtomically((run.out / "metrics.json").string(), metrics.dump(2) + "\n");
   printSummary(run, metrics, total);
+  removeFrameCopies(run);
   if (!s.noReport)
   {
     writeReport(s.output);

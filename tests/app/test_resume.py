@@ -1,5 +1,7 @@
 """clothtrack align killed with SIGKILL at several points, resumed each time, ends with the
-aligned frames and metrics of a run that was never stopped, bit for bit.
+aligned frames and metrics of a run that was never stopped, bit for bit. The stopped runs keep no
+frame in memory (--frame-memory 0: every frame is read again from its copy in the work folder
+whenever a stage needs it), the uninterrupted one keeps them all.
 
 Usage: test_resume.py APP WORK. The run-describing metrics (timings, memory, what was reused)
 are the only ones allowed to differ.
@@ -15,12 +17,13 @@ import time
 
 RUN_DESCRIBING = ("seconds_total", "seconds_per_frame", "seconds_per_fitted_frame",
                   "stage_seconds", "peak_rss_mb", "resumed_frames", "reused_correspondence_frames",
-                  "reused_landmark_frames")
+                  "reused_landmark_frames", "frame_memory_mb", "frame_reads", "frames_kept_on_disk")
 
 
-def align(app, synth, out):
+def align(app, synth, out, streamed=False):
     return [app, "align", os.path.join(synth, "frames"), "--ground-truth",
-            os.path.join(synth, "ground_truth"), "-o", out, "--no-report", "--threads", "2"]
+            os.path.join(synth, "ground_truth"), "-o", out, "--no-report", "--threads", "2"] + (
+                ["--frame-memory", "0"] if streamed else [])
 
 
 def run_until(command, log, stop_when, timeout=600):
@@ -76,10 +79,10 @@ def main():
              ("the fit", aligned_at_least(4))]
     log = os.path.join(work, "resumed.log")
     for name, stop in stops:
-        if not run_until(align(app, synth, resumed), log, stop):
+        if not run_until(align(app, synth, resumed, True), log, stop):
             sys.exit(f"align ended before it could be stopped in {name}")
         print(f"stopped in {name}")
-    run_until(align(app, synth, resumed), log, lambda t: False)
+    run_until(align(app, synth, resumed, True), log, lambda t: False)
 
     for k in range(6):
         name = f"aligned_{k:04d}.vtp"
@@ -94,6 +97,13 @@ def main():
     if again["resumed_frames"] < 2 or again["reused_landmark_frames"] != 6:
         sys.exit(f"the last run resumed {again['resumed_frames']} frames (expected at least 2) "
                  f"and reused the landmarks of {again['reused_landmark_frames']} (expected 6)")
+    if not again["frames_kept_on_disk"] or metrics["frames_kept_on_disk"]:
+        sys.exit("the stopped runs were to keep their frames on disk, the reference in memory")
+    if again["frame_reads"] < 6 or metrics["frame_reads"] != 0:
+        sys.exit(f"frames read again: {again['frame_reads']} streamed (expected at least 6), "
+                 f"{metrics['frame_reads']} in memory (expected 0)")
+    if os.path.exists(os.path.join(resumed, "work", "frames")):
+        sys.exit("the frames' copies were left in the work folder")
     leftovers = [f for _, _, files in os.walk(resumed) for f in files if f.endswith(".part")]
     if leftovers or os.path.exists(os.path.join(resumed, "fit_state")):
         sys.exit(f"left behind: {leftovers or 'fit_state'}")

@@ -146,7 +146,7 @@ TEST(LandmarkConsensus, KeepsALandmarkOnTheWrongSideOutOfThePrediction)
   onB[5].face = farthest;
 
   StartPredictionOptions options;
-  auto frames = [&](int k) -> const TriangleMesh& { return k == 0 ? a : b; };
+  auto frames = [&](int k) { return borrowedFrame(k == 0 ? a : b); };
   auto landmarks = [&](int k) -> const std::vector<OrientedSurfacePoint>&
   { return k == 0 ? onA : onB; };
   auto largestError = [&](const Points& moved)

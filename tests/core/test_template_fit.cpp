@@ -134,10 +134,10 @@ TEST(TemplateFit, SequenceStartsEachFrameFromItsNeighbour)
   for (int k = 0; k < 6; ++k) frames.push_back(moved(t, 0.0, Vec3(0.12 * (k - 2), 0.0, 0.0)));
   std::vector<int> order;
   SequenceFitHooks hooks;
-  hooks.frame = [&](int k) -> const TriangleMesh&
+  hooks.frame = [&](int k)
   {
     order.push_back(k);
-    return frames[k];
+    return borrowedFrame(frames[k]);
   };
   std::vector<int> written;
   hooks.fitted = [&](int k, const FrameFit&) { written.push_back(k); };
@@ -170,7 +170,7 @@ TEST(TemplateFit, ADoubtfulFrameIsFittedAgainFromOtherStarts)
   std::vector<TriangleMesh> frames;
   for (int k = 0; k < 4; ++k) frames.push_back(moved(t, 0.0, Vec3(0.05 * k, 0.0, 0.0)));
   SequenceFitHooks hooks;
-  hooks.frame = [&](int k) -> const TriangleMesh& { return frames[k]; };
+  hooks.frame = [&](int k) { return borrowedFrame(frames[k]); };
   hooks.start = [](int k, int, const Points& fit) -> Points
   {
     Points start = fit;
@@ -273,7 +273,7 @@ TEST(TemplateFit, RefusesBadInput)
   short_.matched.assign(5, 1);
   EXPECT_THROW(fitter.fit(t.V, t, &short_), Error);
   SequenceFitHooks hooks;
-  hooks.frame = [&](int) -> const TriangleMesh& { return t; };
+  hooks.frame = [&](int) { return borrowedFrame(t); };
   EXPECT_THROW(fitTemplateSequence(t, 3, 2, hooks), Error);
   // Cancelling stops the sequence with an error, with one chain or two.
   for (int templateFrame : {0, 2})
@@ -287,7 +287,7 @@ TEST(TemplateFit, RefusesBadInput)
   try
   {
     SequenceFitHooks failing;
-    failing.frame = [&](int k) -> const TriangleMesh& { return k == 4 ? empty : t; };
+    failing.frame = [&](int k) { return borrowedFrame(k == 4 ? empty : t); };
     fitTemplateSequence(t, 2, 6, failing);
     ADD_FAILURE() << "no error";
   }
@@ -297,22 +297,43 @@ TEST(TemplateFit, RefusesBadInput)
   }
 }
 
-TEST(TemplateFit, SideBySideChainsFitAsOneThread)
+namespace
 {
-  const TriangleMesh t = limb();
+/// The limb swinging through `count` frames about frame 2, with correspondences on every 5th
+/// vertex, and hooks that hand them out.
+struct SwingingLimb
+{
   std::vector<TriangleMesh> frames;
   std::vector<VertexTargets> targets;
-  for (int k = 0; k < 5; ++k)
+
+  SwingingLimb(int count, double bend, double shift)
   {
-    frames.push_back(moved(t, 0.2 * (k - 2), Vec3(0.03 * (k - 2), 0.0, 0.01 * k)));
-    targets.push_back(everyNth(frames.back(), 5));
+    const TriangleMesh t = limb();
+    for (int k = 0; k < count; ++k)
+    {
+      frames.push_back(moved(t, bend * (k - 2), Vec3(shift * (k - 2), 0.0, 0.01 * k)));
+      targets.push_back(everyNth(frames.back(), 5));
+    }
   }
+
+  SequenceFitHooks hooks() const
+  {
+    SequenceFitHooks h;
+    h.frame = [this](int k) { return borrowedFrame(frames[k]); };
+    h.targets = [this](int k) -> const VertexTargets* { return &targets[k]; };
+    return h;
+  }
+};
+} // namespace
+
+TEST(TemplateFit, SideBySideChainsFitAsOneThread)
+{
+  const SwingingLimb limbs(5, 0.2, 0.03);
+  const auto& frames = limbs.frames;
   auto run = [&](int threads)
   {
     setThreadCount(threads);
-    SequenceFitHooks hooks;
-    hooks.frame = [&](int k) -> const TriangleMesh& { return frames[k]; };
-    hooks.targets = [&](int k) -> const VertexTargets* { return &targets[k]; };
+    const SequenceFitHooks hooks = limbs.hooks();
     auto fits = fitTemplateSequence(frames[2], 2, 5, hooks);
     setThreadCount(0);
     return fits;
@@ -322,6 +343,32 @@ TEST(TemplateFit, SideBySideChainsFitAsOneThread)
   {
     EXPECT_EQ((one[k].positions - two[k].positions).cwiseAbs().maxCoeff(), 0.0) << "frame " << k;
     EXPECT_LT(meanError(two[k].positions, frames[k].V), 0.01) << "frame " << k;
+  }
+}
+
+TEST(TemplateFit, ALongSequenceKeepsOnlyWhatItsChainsNeed)
+{
+  const SwingingLimb limbs(6, 0.15, 0.02);
+  const auto& frames = limbs.frames;
+  const TriangleMesh t = limb();
+  auto run = [&](bool keep, std::vector<Points>* written)
+  {
+    SequenceFitHooks hooks = limbs.hooks();
+    hooks.keepFits = keep;
+    if (written)
+      hooks.fitted = [written](int k, const FrameFit& fit) { (*written)[k] = fit.positions; };
+    return fitTemplateSequence(frames[2], 2, 6, hooks);
+  };
+  std::vector<Points> written(6);
+  const auto kept = run(true, nullptr), dropped = run(false, &written);
+  for (int k = 0; k < 6; ++k)
+  {
+    // Every frame's fit reached `fitted` unchanged; only the template frame's stays in the result.
+    EXPECT_EQ((written[k] - kept[k].positions).cwiseAbs().maxCoeff(), 0.0) << "frame " << k;
+    EXPECT_EQ(dropped[k].positions.rows(), k == 2 ? t.numVertices() : 0) << "frame " << k;
+    EXPECT_EQ(dropped[k].surfaceDistance.size(), k == 2 ? t.numVertices() : 0) << "frame " << k;
+    EXPECT_DOUBLE_EQ(dropped[k].meanSurfaceDistance, kept[k].surfaceDistance.mean());
+    EXPECT_EQ(dropped[k].iterations, kept[k].iterations);
   }
 }
 
@@ -340,7 +387,7 @@ std::vector<FrameFit> fitBendingLimb(int count, double bend, double shift,
     targets.push_back(everyNth(frames.back(), 5));
   }
   SequenceFitHooks hooks;
-  hooks.frame = [&](int k) -> const TriangleMesh& { return frames[k]; };
+  hooks.frame = [&](int k) { return borrowedFrame(frames[k]); };
   hooks.targets = [&](int k) -> const VertexTargets* { return &targets[k]; };
   return fitTemplateSequence(frames[0], 0, count, hooks, options);
 }
@@ -419,7 +466,7 @@ TEST(TemplateFit, AResumedSequenceWithTheSolverStateIsBitForBitTheSame)
     targets.push_back(everyNth(frames.back(), 5));
   }
   SequenceFitHooks hooks;
-  hooks.frame = [&](int k) -> const TriangleMesh& { return frames[k]; };
+  hooks.frame = [&](int k) { return borrowedFrame(frames[k]); };
   hooks.targets = [&](int k) -> const VertexTargets* { return &targets[k]; };
   std::vector<TemplateFitterState> states(count);
   hooks.fitterState = [&](int k, const TemplateFitterState& state) { states[k] = state; };

@@ -81,9 +81,9 @@ namespace
 class FrameSurfaces
 {
 public:
-  FrameSurfaces(const std::vector<const TriangleMesh*>& frames, double persistence)
-      : frames_(frames), persistence_(persistence), surfaces_(frames.size()),
-        detected_(frames.size())
+  FrameSurfaces(const FrameSource& frames, double persistence)
+      : frames_(frames), persistence_(persistence), meshes_(frames.count()),
+        surfaces_(frames.count()), detected_(frames.count())
   {
   }
 
@@ -91,18 +91,24 @@ public:
   {
     if (!surfaces_[i])
     {
-      surfaces_[i] = std::make_unique<FrameSurface>(*frames_[i], persistence_,
+      meshes_[i] = frames_.frame(i); // the surface refers to it: held as long
+      surfaces_[i] = std::make_unique<FrameSurface>(*meshes_[i], persistence_,
                                                     detected_[i] ? &*detected_[i] : nullptr);
       detected_[i] = surfaces_[i]->extremities;
     }
     return *surfaces_[i];
   }
 
-  void release(int i) { surfaces_[i].reset(); }
+  void release(int i)
+  {
+    surfaces_[i].reset();
+    meshes_[i].reset();
+  }
 
 private:
-  const std::vector<const TriangleMesh*>& frames_;
+  const FrameSource& frames_;
   double persistence_;
+  std::vector<FramePtr> meshes_;
   std::vector<std::unique_ptr<FrameSurface>> surfaces_;
   std::vector<std::optional<std::vector<Vec3>>> detected_; ///< empty until first detected
 };
@@ -126,15 +132,14 @@ private:
 };
 
 /// Indices of the frames that can be fitted at all; the others are marked failed.
-std::vector<int> usableFrames(const std::vector<const TriangleMesh*>& frames,
-                              std::vector<BodyFrameFit>& fits)
+std::vector<int> usableFrames(const FrameSource& frames, std::vector<BodyFrameFit>& fits)
 {
   std::vector<int> usable;
-  for (size_t i = 0; i < frames.size(); ++i)
+  for (int i = 0; i < frames.count(); ++i)
   {
-    const std::string problem = frameProblem(frames[i]);
+    const std::string problem = frameProblem(frames.frame(i).get());
     if (problem.empty())
-      usable.push_back(static_cast<int>(i));
+      usable.push_back(i);
     else
     {
       fits[i].status = BodyFitStatus::Failed;
@@ -332,9 +337,15 @@ BodyFitResult fitBodySequence(const BodyModel& model,
                               const std::vector<const TriangleMesh*>& frames,
                               const BodyFitOptions& options, const StageProgress& progress)
 {
+  return fitBodySequence(model, FramesInMemory(frames), options, progress);
+}
+
+BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
+                              const BodyFitOptions& options, const StageProgress& progress)
+{
   if (model.numVertices() == 0) throw Error("body fit: the body model is empty");
   if (options.stages.empty()) throw Error("body fit: no stage in the weight schedule");
-  const int n = static_cast<int>(frames.size());
+  const int n = frames.count();
   BodyFitResult result;
   result.frames.resize(n);
   const std::vector<int> usable = usableFrames(frames, result.frames);

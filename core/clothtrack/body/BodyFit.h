@@ -33,6 +33,7 @@
 #include "BodyModel.h"
 
 #include <clothtrack/base/Progress.h>
+#include <clothtrack/mesh/FrameSource.h>
 
 #include <Eigen/Geometry>
 
@@ -165,6 +166,10 @@ struct BodyFitResult
 /// flagged Failed). Throws Error when no frame can be fitted at all.
 BodyFitResult fitBodySequence(const BodyModel& model,
                               const std::vector<const TriangleMesh*>& frames,
+                              const BodyFitOptions& options = {},
+                              const StageProgress& progress = {});
+/// The same over frames read when needed: a frame is held while its passes use it.
+BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
                               const BodyFitOptions& options = {},
                               const StageProgress& progress = {});
 

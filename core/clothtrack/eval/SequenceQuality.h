@@ -4,7 +4,10 @@
 // a frame the template misses shows here, not in the first), and the jitter of the motion.
 #include "FrameConfidence.h"
 
+#include <clothtrack/mesh/FrameSource.h>
 #include <clothtrack/mesh/TriangleMesh.h>
+
+#include <functional>
 
 #include <vector>
 
@@ -31,6 +34,17 @@ struct SequenceQuality
 SequenceQuality sequenceQuality(const std::vector<const Points*>& aligned,
                                 const Triangles& templateFaces,
                                 const std::vector<const TriangleMesh*>& frames,
+                                const std::vector<double>& knownSurfaceDistance = {},
+                                int templateFrame = -1, const FrameConfidenceOptions& options = {},
+                                const TemplatePosedByBody& posedByBody = {});
+
+/// Frame k's aligned template vertices; called from several threads at once.
+using AlignedAccess = std::function<Points(int k)>;
+
+/// The same over `frames.count()` frames read when needed: a few frames and their aligned
+/// vertices at a time are held, whatever the sequence's length.
+SequenceQuality sequenceQuality(const AlignedAccess& aligned, const Triangles& templateFaces,
+                                const FrameSource& frames,
                                 const std::vector<double>& knownSurfaceDistance = {},
                                 int templateFrame = -1, const FrameConfidenceOptions& options = {},
                                 const TemplatePosedByBody& posedByBody = {});

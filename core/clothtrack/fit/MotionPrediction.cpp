@@ -7,6 +7,7 @@
 #include <Eigen/SVD>
 
 #include <cmath>
+#include <string>
 
 namespace clothtrack
 {
@@ -89,14 +90,17 @@ Points predictMotion(const Points& points, const std::vector<Vec3>& before,
 }
 
 StartPrediction landmarkStartPrediction(
-    const std::function<const TriangleMesh&(int)>& frames,
+    const std::function<FramePtr(int)>& frames,
     const std::function<const std::vector<OrientedSurfacePoint>&(int)>& landmarks, double radius,
     const LandmarkPairFilter& trusted)
 {
   return [=](int k, int from, const Points& fitOfFrom)
   {
     std::vector<Vec3> before, after;
-    pairLandmarks(frames(from), landmarks(from), frames(k), landmarks(k), before, after);
+    const FramePtr a = frames(from), b = frames(k);
+    if (!a || !b)
+      throw Error("Start prediction: frame " + std::to_string(!a ? from : k) + " is missing.");
+    pairLandmarks(*a, landmarks(from), *b, landmarks(k), before, after);
     if (trusted)
     {
       const std::vector<bool> keep = trusted(before, after);

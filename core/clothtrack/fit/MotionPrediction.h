@@ -49,7 +49,7 @@ using LandmarkPairFilter = std::function<std::vector<bool>(const std::vector<Vec
 /// `landmarks` (one per frame) must outlive the prediction. `trusted`, when given, drops the
 /// pairs it does not trust first (a landmark carried onto the wrong limb of one frame).
 StartPrediction landmarkStartPrediction(
-    const std::function<const TriangleMesh&(int)>& frames,
+    const std::function<FramePtr(int)>& frames,
     const std::function<const std::vector<OrientedSurfacePoint>&(int)>& landmarks, double radius,
     const LandmarkPairFilter& trusted = {});
 } // namespace clothtrack

@@ -18,12 +18,13 @@ namespace
 /// State shared by the two chains and the thread that reports progress.
 struct Chains
 {
-  Chains(const TriangleMesh& templ, const SequenceFitHooks& h, const TemplateFitOptions& o,
+  Chains(const TriangleMesh& templ, int j, const SequenceFitHooks& h, const TemplateFitOptions& o,
          std::vector<FrameFit>& f)
-      : templateMesh(templ), hooks(h), options(o), fits(f)
+      : templateMesh(templ), templateFrame(j), hooks(h), options(o), fits(f)
   {
   }
   const TriangleMesh& templateMesh;
+  int templateFrame;
   const SequenceFitHooks& hooks;
   const TemplateFitOptions& options;
   std::vector<FrameFit>& fits;
@@ -42,7 +43,7 @@ struct Chains
   /// Frame k's inputs, or its earlier result, read under the lock.
   struct Inputs
   {
-    TriangleMesh frame;
+    FramePtr frame;
     std::optional<VertexTargets> targets;
     Points start;
     Points neighbour; ///< the neighbour's fit, when the start was predicted from it
@@ -54,9 +55,9 @@ struct Chains
   {
     const ThreadBudget budget(std::max(1, threads / runningChains.load()));
     const VertexTargets* targets = in.targets ? &*in.targets : nullptr;
-    FrameFit best = fitter.fit(in.start, in.frame, targets);
+    FrameFit best = fitter.fit(in.start, *in.frame, targets);
     if (!hooks.judge) return best;
-    best.doubt = hooks.judge(k, in.frame, best);
+    best.doubt = hooks.judge(k, *in.frame, best);
     struct Alternative
     {
       const char* name;
@@ -76,10 +77,10 @@ struct Chains
       if (!(best.doubt > std::max(1.0, hooks.retryAbove))) break;
       if (!alternative.start) continue;
       FrameFit other =
-          fitter.fit(*alternative.start, in.frame, alternative.withTargets ? targets : nullptr);
+          fitter.fit(*alternative.start, *in.frame, alternative.withTargets ? targets : nullptr);
       ++attempts;
       seconds += other.seconds;
-      other.doubt = hooks.judge(k, in.frame, other);
+      other.doubt = hooks.judge(k, *in.frame, other);
       if (other.doubt < best.doubt)
       {
         best = std::move(other);
@@ -89,6 +90,19 @@ struct Chains
     best.attempts = attempts;
     best.seconds = seconds; // every attempt's
     return best;
+  }
+
+  /// Drops frame k's per-vertex results unless they are kept (SequenceFitHooks::keepFits); the
+  /// template frame's stay, both chains start from them.
+  void release(int k)
+  {
+    if (hooks.keepFits || k < 0 || k >= static_cast<int>(fits.size()) || k == templateFrame) return;
+    FrameFit& f = fits[k];
+    if (f.meanSurfaceDistance < 0 && f.surfaceDistance.size() > 0)
+      f.meanSurfaceDistance = f.surfaceDistance.mean();
+    f.positions = Points();
+    f.used = {};
+    f.surfaceDistance = Eigen::VectorXd();
   }
 
   /// Takes an earlier run's result for frame k; false when there is none.
@@ -133,11 +147,13 @@ struct Chains
           if (fits[previous].resumed && previous != from - direction && hooks.resumedState)
             earlierState = hooks.resumedState(previous);
           in.frame = hooks.frame(k);
+          if (!in.frame) throw Error("Frame " + std::to_string(k) + ": no frame to fit.");
           if (hooks.targets)
             if (const VertexTargets* t = hooks.targets(k)) in.targets = *t;
           in.start = hooks.start ? hooks.start(k, previous, fits[previous].positions)
                                  : fits[previous].positions;
           if (hooks.start && hooks.judge) in.neighbour = fits[previous].positions;
+          release(previous);
         }
         FrameFit fit;
         try
@@ -154,6 +170,8 @@ struct Chains
         fits[k] = std::move(fit);
         finish(k, true);
       }
+      const std::lock_guard<std::mutex> lock(mutex);
+      release(to - direction);
     }
     catch (...)
     {
@@ -196,7 +214,7 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
                 " is not in the sequence of " + std::to_string(numFrames) + " frames.");
   if (!hooks.frame) throw Error("Template fit: no frame source.");
   std::vector<FrameFit> fits(numFrames);
-  Chains chains(templateMesh, hooks, options, fits);
+  Chains chains(templateMesh, templateFrame, hooks, options, fits);
   {
     const std::lock_guard<std::mutex> lock(chains.mutex);
     if (!chains.resume(templateFrame))
@@ -205,6 +223,7 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
       own.positions = templateMesh.V;
       own.used.assign(templateMesh.numVertices(), 0);
       own.surfaceDistance = Eigen::VectorXd::Zero(templateMesh.numVertices());
+      own.meanSurfaceDistance = 0.0;
       chains.finish(templateFrame, true);
     }
     else

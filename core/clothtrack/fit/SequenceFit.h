@@ -6,6 +6,7 @@
 #include "TemplateFit.h"
 
 #include <clothtrack/base/Progress.h>
+#include <clothtrack/mesh/FrameSource.h>
 
 #include <functional>
 #include <optional>
@@ -20,8 +21,8 @@ using StartPrediction = std::function<Points(int k, int from, const Points& fitO
 /// (never by both chains at once), and what it returns is copied at once.
 struct SequenceFitHooks
 {
-  /// Frame k. Required.
-  std::function<const TriangleMesh&(int k)> frame;
+  /// Frame k (held while it is fitted). Required.
+  std::function<FramePtr(int k)> frame;
   /// Correspondences of frame k; null (or no function) for none.
   std::function<const VertexTargets*(int k)> targets;
   /// The start of frame k; by default the neighbour's fit as it is.
@@ -50,6 +51,11 @@ struct SequenceFitHooks
   std::function<double(int k, const TriangleMesh& frame, const FrameFit& fit)> judge;
   /// A judged frame is fitted again when its doubt exceeds this (at least 1).
   double retryAbove = 1.0;
+  /// False for a long sequence: each frame's positions, correspondence flags and surface
+  /// distances are dropped from the result once `fitted` has had them and the next frame of its
+  /// chain has started from them (its mean surface distance is kept), so that memory does not
+  /// grow with the sequence. Resumed frames are dropped too.
+  bool keepFits = true;
 };
 
 /// Fits the template through all `numFrames` frames. Throws Error (naming the frame) when a fit

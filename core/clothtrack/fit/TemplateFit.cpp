@@ -505,6 +505,7 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
                                       std::numeric_limits<double>::infinity(), hint[i])
                         .distance;
               });
+  result.meanSurfaceDistance = n > 0 ? result.surfaceDistance.mean() : 0.0;
   result.seconds = seconds(clock);
   return result;
 }

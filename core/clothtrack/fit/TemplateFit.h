@@ -105,14 +105,16 @@ struct FrameFit
   Points positions;                ///< fitted template vertices
   std::vector<unsigned char> used; ///< correspondence used in the energy
   Eigen::VectorXd surfaceDistance; ///< distance of each fitted vertex to the frame's surface
-  int nearestValid = 0;            ///< valid nearest points in the last round
-  int rounds = 0;                  ///< minimisations run
-  int iterations = 0;              ///< L-BFGS iterations, or conjugate-gradient steps
-  int factorisations = 0;          ///< exact solver: Cholesky factorisations
-  double factorSeconds = 0.0;      ///< exact solver: time in the factorisations
-  double solveSeconds = 0.0;       ///< exact solver: time in the conjugate gradients
-  int nearestSearches = 0;         ///< closest-point searches (the rest reused, nearestReuse)
-  double energy = 0.0;             ///< E at the end of the last stage
+  /// Mean of surfaceDistance; negative when not measured (a resumed frame).
+  double meanSurfaceDistance = -1.0;
+  int nearestValid = 0;       ///< valid nearest points in the last round
+  int rounds = 0;             ///< minimisations run
+  int iterations = 0;         ///< L-BFGS iterations, or conjugate-gradient steps
+  int factorisations = 0;     ///< exact solver: Cholesky factorisations
+  double factorSeconds = 0.0; ///< exact solver: time in the factorisations
+  double solveSeconds = 0.0;  ///< exact solver: time in the conjugate gradients
+  int nearestSearches = 0;    ///< closest-point searches (the rest reused, nearestReuse)
+  double energy = 0.0;        ///< E at the end of the last stage
   double seconds = 0.0;
   bool resumed = false; ///< positions kept from an earlier run, not fitted here
   /// The sequence fit's judge of this fit (SequenceFitHooks::judge): at most 1 is trusted, more

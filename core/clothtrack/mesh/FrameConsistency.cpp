@@ -45,12 +45,18 @@ std::vector<FrameJump> frameJumps(const std::vector<const TriangleMesh*>& frames
                                   const ConsistencyOptions& options)
 {
   std::vector<FrameExtent> extents;
+  for (const TriangleMesh* frame : frames) extents.push_back(frameExtent(*frame));
+  return frameJumps(extents, options);
+}
+
+std::vector<FrameJump> frameJumps(const std::vector<FrameExtent>& extents,
+                                  const ConsistencyOptions& options)
+{
   std::vector<double> sizes, heights;
-  for (const TriangleMesh* frame : frames)
+  for (const FrameExtent& e : extents)
   {
-    extents.push_back(frameExtent(*frame));
-    sizes.push_back(extents.back().size);
-    heights.push_back(extents.back().height);
+    sizes.push_back(e.size);
+    heights.push_back(e.height);
   }
   const double typicalSize = median(sizes), typicalHeight = median(heights);
   std::vector<FrameJump> jumps;
@@ -60,7 +66,7 @@ std::vector<FrameJump> frameJumps(const std::vector<const TriangleMesh*>& frames
     const double r = extents[k].size / typicalSize;
     return r <= options.sizeTolerance && r >= 1 / options.sizeTolerance;
   };
-  for (size_t k = 0; k < frames.size(); ++k)
+  for (size_t k = 0; k < extents.size(); ++k)
   {
     FrameJump jump;
     jump.frame = static_cast<int>(k);

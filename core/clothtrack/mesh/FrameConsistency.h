@@ -44,6 +44,9 @@ struct FrameJump
 /// The frames whose size or place jumps, in order.
 std::vector<FrameJump> frameJumps(const std::vector<const TriangleMesh*>& frames,
                                   const ConsistencyOptions& options = {});
+/// The same from each frame's extent, taken when it was read.
+std::vector<FrameJump> frameJumps(const std::vector<FrameExtent>& extents,
+                                  const ConsistencyOptions& options = {});
 
 /// What is wrong with a ground-truth frame against the input frame it belongs to: another unit
 /// (refused, `refused` set), another size or another place (warnings); empty when they agree.

@@ -34,6 +34,12 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
                                     const std::vector<const TriangleMesh*>& frames,
                                     const BodyStageOptions& options, const StageProgress& progress)
 {
+  return fitBodyAndLandmarks(model, FramesInMemory(frames), options, progress);
+}
+
+BodyStageResult fitBodyAndLandmarks(const BodyModel& model, const FrameSource& frames,
+                                    const BodyStageOptions& options, const StageProgress& progress)
+{
   constexpr double fitShare = 0.95;
   BodyStageResult out;
   BodyFitOptions fit = options.fit;
@@ -41,7 +47,7 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
     fit.frameMotion = rigidFrameMotion(options.registration, options.minimumRegistrationOverlap);
   out.body = fitBodySequence(model, frames, fit,
                              [&](double done) { return !progress || progress(fitShare * done); });
-  const int n = static_cast<int>(frames.size());
+  const int n = frames.count();
   out.bodyLandmarks.resize(n);
   out.transferred.resize(n);
   out.landmarks.resize(n);
@@ -52,10 +58,12 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
         const BodyFrameFit& fit = out.body.frames[k];
         out.bodyLandmarks[k] = orientedLandmarks(model, model.posed(out.body.beta, fit.pose));
         out.transferred[k].resize(out.bodyLandmarks[k].size());
-        if (!frames[k] || fit.status == BodyFitStatus::Failed) return;
-        const SurfaceLocator locator(*frames[k]);
+        if (fit.status == BodyFitStatus::Failed) return;
+        const FramePtr frame = frames.frame(k);
+        if (!frame) return;
+        const SurfaceLocator locator(*frame);
         out.transferred[k] =
-            transferLandmarks(out.bodyLandmarks[k], *frames[k], locator, options.transfer);
+            transferLandmarks(out.bodyLandmarks[k], *frame, locator, options.transfer);
         out.landmarks[k] = landmarkSeeds(out.transferred[k]);
       },
       1);

@@ -54,6 +54,10 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
                                     const std::vector<const TriangleMesh*>& frames,
                                     const BodyStageOptions& options = {},
                                     const StageProgress& progress = {});
+/// The same over frames read when needed (mesh/FrameSource.h).
+BodyStageResult fitBodyAndLandmarks(const BodyModel& model, const FrameSource& frames,
+                                    const BodyStageOptions& options = {},
+                                    const StageProgress& progress = {});
 
 /// Each frame's fittedRestPoseDistance, the template criterion: NaN unless its body fit is ok
 /// and explains its frame nearly as well as the sequence's median fit does (frameDistance at

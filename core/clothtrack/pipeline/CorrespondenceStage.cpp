@@ -27,6 +27,17 @@ FrameCorrespondence selfCorrespondence(const TriangleMesh& templateMesh)
   return c;
 }
 
+namespace
+{
+FrameCorrespondence correspondOne(const TemplatePatches& patches, int k, const FrameAccess& frame,
+                                  const LandmarkAccess& landmarks)
+{
+  const FramePtr mesh = frame(k); // held while its patches grow
+  if (!mesh) throw Error("Correspondence: frame " + std::to_string(k) + " is missing.");
+  return patches.correspond(*mesh, landmarks(k));
+}
+} // namespace
+
 void correspondFrames(const TemplatePatches& patches, int templateFrame,
                       const std::vector<int>& which, const FrameAccess& frame,
                       const LandmarkAccess& landmarks,
@@ -66,7 +77,7 @@ void correspondFrames(const TemplatePatches& patches, int templateFrame,
           const int k = which[m];
           const auto start = std::chrono::steady_clock::now();
           FrameCorrespondence c = k == templateFrame ? selfCorrespondence(patches.templateMesh())
-                                                     : patches.correspond(frame(k), landmarks(k));
+                                                     : correspondOne(patches, k, frame, landmarks);
           c.seconds =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           {

@@ -3,6 +3,7 @@
 // frame, from geodesic patches grown around the landmark pairs.
 #include <clothtrack/base/Progress.h>
 #include <clothtrack/correspondence/PatchCorrespondence.h>
+#include <clothtrack/mesh/FrameSource.h>
 
 #include <functional>
 #include <vector>
@@ -13,7 +14,7 @@ namespace clothtrack
 FrameCorrespondence selfCorrespondence(const TriangleMesh& templateMesh);
 
 /// Frame k of a sequence and its landmarks; called from several threads at once.
-using FrameAccess = std::function<const TriangleMesh&(int k)>;
+using FrameAccess = std::function<FramePtr(int k)>;
 using LandmarkAccess = std::function<const std::vector<OrientedSurfacePoint>&(int k)>;
 
 /// Correspondences of the template on the frames `which`, several frames at once (the template

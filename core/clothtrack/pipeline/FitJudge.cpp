@@ -1,6 +1,9 @@
 #include "FitJudge.h"
 
+#include <clothtrack/base/Error.h>
+
 #include <memory>
+#include <string>
 
 namespace clothtrack
 {
@@ -26,13 +29,25 @@ SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
                                       int templateFrame, const FitJudgeOptions& options,
                                       const TemplatePosedByBody& posedByBody)
 {
-  std::vector<const Points*> aligned;
+  if (frames.size() != fits.size())
+    throw Error("Sequence quality: " + std::to_string(fits.size()) + " aligned frames for " +
+                std::to_string(frames.size()) + " frames.");
+  return fittedSequenceQuality(
+      fits, templateFaces, FramesInMemory(frames), [&](int k) { return fits[k].positions; },
+      templateFrame, options, posedByBody);
+}
+
+SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
+                                      const Triangles& templateFaces, const FrameSource& frames,
+                                      const AlignedAccess& aligned, int templateFrame,
+                                      const FitJudgeOptions& options,
+                                      const TemplatePosedByBody& posedByBody)
+{
   std::vector<double> known;
   for (const FrameFit& f : fits)
-  {
-    aligned.push_back(&f.positions);
-    known.push_back(f.surfaceDistance.size() ? f.surfaceDistance.mean() : -1.0);
-  }
+    known.push_back(f.meanSurfaceDistance >= 0     ? f.meanSurfaceDistance
+                    : f.surfaceDistance.size() > 0 ? f.surfaceDistance.mean()
+                                                   : -1.0);
   return sequenceQuality(aligned, templateFaces, frames, known, templateFrame, options.limits,
                          posedByBody);
 }

@@ -31,4 +31,12 @@ SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
                                       const std::vector<const TriangleMesh*>& frames,
                                       int templateFrame, const FitJudgeOptions& options = {},
                                       const TemplatePosedByBody& posedByBody = {});
+
+/// The same over frames read when needed, each frame's fitted vertices from `aligned` (fits
+/// whose vertices were dropped, SequenceFitHooks::keepFits, keep their mean surface distance).
+SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
+                                      const Triangles& templateFaces, const FrameSource& frames,
+                                      const AlignedAccess& aligned, int templateFrame,
+                                      const FitJudgeOptions& options = {},
+                                      const TemplatePosedByBody& posedByBody = {});
 } // namespace clothtrack

@@ -12,7 +12,7 @@ LandmarkPairFilter locallyRigidLandmarkFilter(double tolerance, double radius)
 }
 
 StartPrediction landmarkStartPrediction(
-    const std::function<const TriangleMesh&(int)>& frames,
+    const std::function<FramePtr(int)>& frames,
     const std::function<const std::vector<OrientedSurfacePoint>&(int)>& landmarks,
     const StartPredictionOptions& options)
 {

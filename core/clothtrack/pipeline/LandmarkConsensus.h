@@ -13,7 +13,7 @@ LandmarkPairFilter locallyRigidLandmarkFilter(double tolerance, double radius);
 /// landmarkStartPrediction over options.predictRadius, its pairs filtered by
 /// locallyRigidLandmarkFilter(options.landmarkConsensus, options.predictRadius).
 StartPrediction landmarkStartPrediction(
-    const std::function<const TriangleMesh&(int)>& frames,
+    const std::function<FramePtr(int)>& frames,
     const std::function<const std::vector<OrientedSurfacePoint>&(int)>& landmarks,
     const StartPredictionOptions& options);
 } // namespace clothtrack

@@ -1,6 +1,9 @@
 #include "TemplateStage.h"
 
+#include <clothtrack/base/Error.h>
 #include <clothtrack/base/Parallel.h>
+
+#include <string>
 
 namespace clothtrack
 {
@@ -8,10 +11,23 @@ TemplateSelection chooseTemplateFrame(const std::vector<const TriangleMesh*>& fr
                                       const TemplateSelectionOptions& options,
                                       const std::vector<double>& restPoseDistance)
 {
-  std::vector<FrameTopology> topology(frames.size());
+  return chooseTemplateFrame(FramesInMemory(frames), options, restPoseDistance);
+}
+
+TemplateSelection chooseTemplateFrame(const FrameSource& frames,
+                                      const TemplateSelectionOptions& options,
+                                      const std::vector<double>& restPoseDistance)
+{
+  std::vector<FrameTopology> topology(frames.count());
   parallelFor(
-      0, static_cast<int>(frames.size()),
-      [&](int k) { topology[k] = frameTopology(*frames[k], options.minimumShellArea); }, 1);
+      0, frames.count(),
+      [&](int k)
+      {
+        const FramePtr frame = frames.frame(k);
+        if (!frame) throw Error("Template selection: frame " + std::to_string(k) + " is missing.");
+        topology[k] = frameTopology(*frame, options.minimumShellArea);
+      },
+      1);
   TemplateSelection selection = selectTemplate(topology, options, restPoseDistance);
   selection.frames = std::move(topology);
   return selection;
