@@ -11,6 +11,7 @@
 #include "Commands.h"
 #include "ErrorMetrics.h"
 #include "Progress.h"
+#include "Ranks.h"
 #include "ReconstructRun.h"
 #include "Report.h"
 #include "TextFile.h"
@@ -42,6 +43,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <thread>
 
 namespace fs = std::filesystem;
 
@@ -84,7 +86,7 @@ struct Run
   AlignSettings settings;
   Input input;
   fs::path out, work;
-  nlohmann::json stageSeconds, landmarkKey, correspondenceKey;
+  nlohmann::json stageSeconds, stagePeakMemory, landmarkKey, correspondenceKey;
   BodyStage body;
   int templateFrame = -1;
   std::string templateDecidedBy = "given";
@@ -189,9 +191,11 @@ void runBodyStage(Run& run)
     progress.finish();
     run.body.body = std::move(result.body);
     run.body.landmarks = std::move(result.landmarks);
-    writeBodyStage(cache.string(), run.landmarkKey,
-                   bodyFitJson(s.modelPath, run.input.files, run.body), run.body);
+    if (ranks::leader())
+      writeBodyStage(cache.string(), run.landmarkKey,
+                     bodyFitJson(s.modelPath, run.input.files, run.body), run.body);
   }
+  if (!ranks::leader()) return; // the leader writes and warns for all
   writeTextAtomically((run.out / "body_fit.json").string(),
                       bodyFitJson(s.modelPath, run.input.files, run.body).dump(1) + "\n");
   warnAboutDiscontinuities(run.body.body, options.fit.neighbourGap);
@@ -222,6 +226,7 @@ void runTemplateStage(Run& run)
   }
   const int j = run.templateFrame;
   run.templateHeld = run.input.frame(j);
+  if (!ranks::leader()) return;
   std::fprintf(stderr, "template: frame %d (%s), %d vertices, %s%s\n", j,
                fs::path(run.input.files[j]).filename().c_str(), run.templateMesh().numVertices(),
                s.forcedTemplate >= 0 ? "set by --template" : "chosen by ",
@@ -250,6 +255,7 @@ void startKeys(Run& run)
                            {"patches", {p.epsilon, p.minimumRadius, p.maximumRadius}},
                            {"seed_consensus", p.minimumSeedConsensus}};
   const fs::path folder = run.work / "correspondence";
+  if (!ranks::leader()) return; // the others wait until the leader has cleared the way
   if (!sameKey(folder / "key.json", run.correspondenceKey))
   {
     fs::remove_all(folder);
@@ -271,7 +277,8 @@ void startKeys(Run& run)
   writeTextAtomically(path.string(), key.dump(2) + "\n");
 }
 
-/// Stage 2b for every frame still to fit whose correspondences the work folder lacks.
+/// Stage 2b for every frame still to fit whose correspondences the work folder lacks; with
+/// several processes, each takes every count()-th frame.
 void runCorrespondenceStage(Run& run, const AlignedOutput& output)
 {
   const AlignSettings& s = run.settings;
@@ -280,7 +287,7 @@ void runCorrespondenceStage(Run& run, const AlignedOutput& output)
   if (!s.fit.useCorrespondence) return;
   const int nv = run.templateMesh().numVertices();
   std::vector<int> missing;
-  for (int k = 0; k < run.input.count(); ++k)
+  for (int k = ranks::rank(); k < run.input.count(); k += ranks::count())
     if (k != run.templateFrame && !fs::exists(output.framePath(run.input.frameNumber[k])))
     {
       if (readTargets(targetPath(run, k).string(), run.input.files[k], nv))
@@ -341,6 +348,98 @@ void keepSolverStates(const Run& run, BackgroundWriter& writer, SequenceFitHooks
   { writer.submit([path = solverStatePath(run, k), state]() { writeFitterState(path, state); }); };
 }
 
+/// The chains this process fits: with several, process 0 fits the backward chain (and reports
+/// the template frame) and process 1 the forward chain, each from the template as one process
+/// would; further processes have none.
+std::optional<ChainSelection> ownChains()
+{
+  if (ranks::count() == 1) return ChainSelection::Both;
+  if (ranks::rank() > 1) return std::nullopt;
+  return ranks::rank() == 0 ? ChainSelection::Backward : ChainSelection::Forward;
+}
+
+bool fitsFrame(int k, int templateFrame)
+{
+  const std::optional<ChainSelection> chains = ownChains();
+  if (!chains) return false;
+  return *chains == ChainSelection::Both ||
+         (*chains == ChainSelection::Backward) == (k <= templateFrame);
+}
+
+/// With several processes: the seconds of every frame and whether it was resumed (each process
+/// knows its own frames'), and on the leader the other processes' fits read back from
+/// OUT/aligned with their errors, as its own would be after the fit.
+void shareFits(Run& run, const AlignedOutput& output,
+               const std::function<void(int, const Points&)>& errorsOf)
+{
+  if (ranks::count() == 1) return;
+  const int n = run.input.count(), j = run.templateFrame;
+  std::vector<double> shared(2 * n + 1, 0.0);
+  for (int k = 0; k < n; ++k)
+    if (fitsFrame(k, j))
+    {
+      shared[2 * k] = run.fits[k].seconds;
+      shared[2 * k + 1] = run.fits[k].resumed;
+    }
+  shared[2 * n] = run.reusedCorrespondences;
+  ranks::sum(shared);
+  run.reusedCorrespondences = static_cast<int>(shared[2 * n]);
+  if (!ranks::leader()) return;
+  for (int k = 0; k < n; ++k)
+  {
+    if (fitsFrame(k, j)) continue;
+    std::optional<FrameFit> fit = output.earlier(run.input.frameNumber[k]);
+    if (!fit)
+      throw Error(output.framePath(run.input.frameNumber[k]).string() +
+                  ": another process did not leave this frame");
+    errorsOf(k, fit->positions);
+    fit->meanSurfaceDistance = fit->surfaceDistance.mean();
+    fit->positions = Points();
+    fit->used = {};
+    fit->surfaceDistance = Eigen::VectorXd();
+    fit->seconds = shared[2 * k];
+    fit->resumed = shared[2 * k + 1] > 0;
+    run.fits[k] = std::move(*fit);
+  }
+}
+
+/// What the fit reads: frames, correspondences (into `targets`, one frame at a time), starts
+/// and the judge of each fit.
+void addInputHooks(Run& run, SequenceFitHooks& hooks, VertexTargets& targets)
+{
+  // The hooks outlive this function: they hold pointers to the run, not references to locals.
+  const AlignSettings& s = run.settings;
+  const int n = run.input.count(), j = run.templateFrame;
+  Run* r = &run;
+  hooks.frame = [r](int k) { return r->input.frame(k); };
+  hooks.keepFits = false; // written as they come; evaluate reads them back
+  if (s.fit.useCorrespondence)
+    hooks.targets = [r, out = &targets](int k) -> const VertexTargets*
+    {
+      const Input& in = r->input;
+      std::optional<VertexTargets> read =
+          readTargets(targetPath(*r, k).string(), in.files[k], r->templateMesh().numVertices());
+      if (!read)
+        throw Error("the correspondences of " + in.files[k] + " vanished from " +
+                    (r->work / "correspondence").string() + " during the run");
+      *out = std::move(*read);
+      return out;
+    };
+  if (s.prediction.predictRadius > 0)
+    hooks.start = landmarkStartPrediction(
+        [r](int k) { return r->input.frame(k); },
+        [r](int k) -> const FrameLandmarks& { return r->body.landmarks[k]; }, s.prediction);
+  if (static_cast<int>(run.body.body.frames.size()) == n)
+  {
+    BodyModel ownModel;
+    run.posedByBody =
+        bodyPosedTemplate(bodyModel(s.modelPath, ownModel), run.body.body, run.templateMesh(), j);
+  }
+  if (s.startFromBody && run.posedByBody)
+    hooks.start = bodyStartPrediction(run.posedByBody, std::move(hooks.start));
+  if (s.retryDoubtful) judgeFits(hooks, run.templateMesh(), {}, run.posedByBody);
+}
+
 /// Stage 3: both chains through the core, each frame written as soon as it is fitted.
 void runFitStage(Run& run, const AlignedOutput& output)
 {
@@ -361,32 +460,7 @@ void runFitStage(Run& run, const AlignedOutput& output)
 
   VertexTargets targets;
   SequenceFitHooks hooks;
-  hooks.frame = [&](int k) { return in.frame(k); };
-  hooks.keepFits = false; // written as they come; evaluate reads them back
-  if (s.fit.useCorrespondence)
-    hooks.targets = [&](int k) -> const VertexTargets*
-    {
-      std::optional<VertexTargets> read =
-          readTargets(targetPath(run, k).string(), in.files[k], run.templateMesh().numVertices());
-      if (!read)
-        throw Error("the correspondences of " + in.files[k] + " vanished from " +
-                    (run.work / "correspondence").string() + " during the run");
-      targets = std::move(*read);
-      return &targets;
-    };
-  if (s.prediction.predictRadius > 0)
-    hooks.start = landmarkStartPrediction(
-        [&](int k) { return in.frame(k); },
-        [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; }, s.prediction);
-  if (static_cast<int>(run.body.body.frames.size()) == n)
-  {
-    BodyModel ownModel;
-    run.posedByBody =
-        bodyPosedTemplate(bodyModel(s.modelPath, ownModel), run.body.body, run.templateMesh(), j);
-  }
-  if (s.startFromBody && run.posedByBody)
-    hooks.start = bodyStartPrediction(run.posedByBody, std::move(hooks.start));
-  if (s.retryDoubtful) judgeFits(hooks, run.templateMesh(), {}, run.posedByBody);
+  addInputHooks(run, hooks, targets);
   hooks.resumed = [&](int k)
   {
     std::optional<FrameFit> earlier = output.earlier(in.frameNumber[k]);
@@ -416,10 +490,16 @@ void runFitStage(Run& run, const AlignedOutput& output)
     progress.step(static_cast<int>(n * done + 0.5));
     return true;
   };
-  run.fits = fitTemplateSequence(run.templateMesh(), j, n, hooks, s.fit);
+  const std::optional<ChainSelection> chains = ownChains();
+  if (chains) hooks.chains = *chains;
+  run.fits = chains ? fitTemplateSequence(run.templateMesh(), j, n, hooks, s.fit)
+                    : std::vector<FrameFit>(n);
   writer.finish();
-  fs::remove_all(run.out / "fit_state"); // every frame is written: no fit continues from these
+  ranks::barrier(); // every process has written its frames
   progress.finish();
+  shareFits(run, output, errorsOf);
+  if (!ranks::leader()) return;
+  fs::remove_all(run.out / "fit_state"); // every frame is written: no fit continues from these
   output.writeCollection(in.frameNumber, s.sequence.fps);
 }
 
@@ -560,6 +640,7 @@ void addTimings(nlohmann::json& metrics, const Run& run, double total)
   metrics["seconds_per_fitted_frame"] = fitted ? fittedSeconds / fitted : 0.0;
   metrics["stage_seconds"] = run.stageSeconds;
   metrics["peak_rss_mb"] = peakMemoryMB();
+  metrics["stage_peak_rss_mb"] = run.stagePeakMemory;
   // Streaming: how often frames were read after the first time, and whether from the work folder.
   metrics["frame_memory_mb"] = run.settings.frameMemoryMB;
   metrics["frames_kept_on_disk"] = run.input.spilled;
@@ -589,8 +670,11 @@ void printSummary(const Run& run, const nlohmann::json& metrics, double total)
 void removeFrameCopies(const Run& run)
 {
   std::error_code ignored;
-  fs::remove_all(run.work / "frames", ignored);
-  fs::remove_all(run.work / "truth", ignored);
+  const fs::path copies =
+      ranks::leader() ? run.work : run.work / ("rank_" + std::to_string(ranks::rank()));
+  fs::remove_all(copies / "frames", ignored);
+  fs::remove_all(copies / "truth", ignored);
+  if (!ranks::leader()) fs::remove(copies, ignored); // once empty
 }
 
 /// Runs `stage` and records its wall time under `name`.
@@ -599,6 +683,42 @@ template <class Stage> void timed(Run& run, const char* name, const Stage& stage
   const auto start = Clock::now();
   stage();
   run.stageSeconds[name] = since(start);
+  run.stagePeakMemory[name] = peakMemoryMB(); // where the peak was reached
+}
+
+/// Reading and stage 1. With several processes the leader goes first: it reconstructs point
+/// clouds, clears what an interrupted run left and keeps the body fit in the work folder; the
+/// others then read their frames and take the body fit from there.
+void readAndFitBodies(Run& run)
+{
+  const bool leader = ranks::leader();
+  if (!leader) ranks::barrier();
+  // Each process keeps its own copies of frames that do not fit in memory.
+  const fs::path copies = leader ? run.work : run.work / ("rank_" + std::to_string(ranks::rank()));
+  timed(run, "read", [&] { run.input = readInput(run.settings, copies); });
+  fs::create_directories(run.work);
+  fs::create_directories(run.out);
+  if (leader) removeLeftoverParts({run.out, run.work});
+  timed(run, "body_fit", [&] { runBodyStage(run); });
+  if (leader) ranks::barrier();
+}
+
+/// The stages' seconds of every process, in metrics.json when several shared the run.
+void addRankTimings(nlohmann::json& metrics, const Run& run)
+{
+  const char* stages[] = {"read", "body_fit", "select_template", "correspond", "fit"};
+  std::vector<double> own;
+  for (const char* stage : stages) own.push_back(run.stageSeconds.value(stage, 0.0));
+  const std::vector<double> all = ranks::gather(own);
+  metrics["ranks"] = ranks::count();
+  nlohmann::json perRank = nlohmann::json::array();
+  for (size_t r = 0; r * own.size() < all.size(); ++r)
+  {
+    nlohmann::json seconds;
+    for (size_t i = 0; i < own.size(); ++i) seconds[stages[i]] = all[r * own.size() + i];
+    perRank.push_back(seconds);
+  }
+  metrics["rank_stage_seconds"] = perRank;
 }
 
 int alignCommand(const Args& args, AlignMode mode)
@@ -608,35 +728,43 @@ int alignCommand(const Args& args, AlignMode mode)
   Run run;
   run.settings = std::move(*settings);
   const AlignSettings& s = run.settings;
-  setThreadCount(s.threads);
+  // Processes on one machine share its cores.
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  setThreadCount(s.threads > 0 || ranks::count() == 1 ? s.threads
+                                                      : std::max(1, cores / ranks::count()));
   const auto start = Clock::now();
   run.out = s.output;
   run.work = s.workDir.empty() ? run.out / "work" : fs::path(s.workDir);
-  timed(run, "read", [&] { run.input = readInput(s, run.work); });
-  fs::create_directories(run.work);
-  fs::create_directories(run.out);
-  removeLeftoverParts({run.out, run.work});
-  timed(run, "body_fit", [&] { runBodyStage(run); });
+  readAndFitBodies(run);
   timed(run, "select_template", [&] { runTemplateStage(run); });
   const AlignedOutput output(run.out, run.templateMesh());
   startKeys(run);
+  ranks::barrier(); // the leader has removed results of other options
   timed(run, "correspond", [&] { runCorrespondenceStage(run, output); });
+  ranks::barrier(); // every frame's correspondences are in the work folder
   if (mode == AlignMode::CorrespondOnly)
   {
+    removeFrameCopies(run);
+    if (!ranks::leader()) return 0;
     std::printf("landmarks and correspondences of %d frames (template frame %d) in %s; "
                 "'clothtrack fit' with the same input and work folder fits the template\n",
                 run.input.count(), run.templateFrame, run.work.c_str());
-    removeFrameCopies(run);
     return 0;
   }
   timed(run, "fit", [&] { runFitStage(run, output); });
   nlohmann::json metrics;
-  timed(run, "evaluate", [&] { metrics = evaluate(run, output); });
+  addRankTimings(metrics, run);
+  if (!ranks::leader())
+  {
+    removeFrameCopies(run);
+    return 0;
+  }
+  timed(run, "evaluate", [&] { metrics.update(evaluate(run, output)); });
+  removeFrameCopies(run);
   const double total = since(start);
   addTimings(metrics, run, total);
   writeTextAtomically((run.out / "metrics.json").string(), metrics.dump(2) + "\n");
   printSummary(run, metrics, total);
-  removeFrameCopies(run);
   if (!s.noReport)
   {
     writeReport(s.output);

@@ -1,5 +1,7 @@
 #include "Progress.h"
 
+#include "Ranks.h"
+
 #include <cstdio>
 #include <unistd.h>
 
@@ -13,6 +15,7 @@ Progress::Progress(std::string label, int total)
 
 void Progress::step(int done)
 {
+  if (!ranks::leader()) return; // one line for the processes of a run: the leader's
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double rate = elapsed > 0 ? done / elapsed : 0.0;
@@ -25,6 +28,6 @@ void Progress::step(int done)
 
 void Progress::finish()
 {
-  if (interactive_) std::fprintf(stderr, "\n");
+  if (interactive_ && ranks::leader()) std::fprintf(stderr, "\n");
 }
 } // namespace clothtrack::app

@@ -1,5 +1,6 @@
 // clothtrack: command-line front end of the ClothTrack toolkit.
 #include "Commands.h"
+#include "Ranks.h"
 
 #include <clothtrack/base/Error.h>
 #include <clothtrack/base/MemoryReuse.h>
@@ -82,29 +83,11 @@ void printUsage(std::FILE* out)
 }
 } // namespace
 
-int main(int argc, char** argv)
+namespace
 {
-  clothtrack::keepFreedMemoryForReuse();
-  // VTK messages go to stderr as plain lines rather than to a window or a popup.
-  vtkOutputWindow::GetInstance()->SetDisplayModeToAlwaysStdErr();
-  // The logger would print each of them a second time, in colour, with a time stamp.
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  if (argc < 2)
-  {
-    printUsage(stderr);
-    return 1;
-  }
-  const std::string name = argv[1];
-  if (name == "--help" || name == "-h" || name == "help")
-  {
-    printUsage(stdout);
-    return 0;
-  }
-  if (name == "--version")
-  {
-    std::printf("clothtrack 0.1.0\n");
-    return 0;
-  }
+/// The command's exit code; an error is one line on stderr.
+int runCommand(const std::string& name, int argc, char** argv)
+{
   const auto it = commands().find(name);
   if (it == commands().end())
   {
@@ -137,4 +120,42 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "clothtrack %s: error: %s\n", name.c_str(), e.what());
   }
   return 1;
+}
+/// The exit code of the command line: usage, version, or a command.
+int dispatch(int argc, char** argv)
+{
+  if (argc < 2)
+  {
+    printUsage(stderr);
+    return 1;
+  }
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help")
+  {
+    printUsage(stdout);
+    return 0;
+  }
+  if (name == "--version")
+  {
+    std::printf("clothtrack 0.1.0\n");
+    return 0;
+  }
+  return runCommand(name, argc, argv);
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  clothtrack::keepFreedMemoryForReuse();
+  clothtrack::app::ranks::start(&argc, &argv);
+  // VTK messages go to stderr as plain lines rather than to a window or a popup.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToAlwaysStdErr();
+  // The logger would print each of them a second time, in colour, with a time stamp.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  const int code = dispatch(argc, argv);
+  std::fflush(stdout);
+  std::fflush(stderr);
+  if (code != 0 && clothtrack::app::ranks::count() > 1) clothtrack::app::ranks::abortAll();
+  clothtrack::app::ranks::stop();
+  return code;
 }

@@ -8,7 +8,7 @@ CT_PYTHON=/usr/bin/python3
 # Everything the build, the tests and the plugin need, all from Debian 12.
 CT_PACKAGES="cmake ninja-build g++ pkg-config libeigen3-dev libflann-dev liblz4-dev libvtk9-dev python3-vtk9
   python3-numpy python3-matplotlib libpcl-dev libboost-program-options-dev libgtest-dev paraview paraview-dev libqt5svg5-dev
-  qtxmlpatterns5-dev-tools xvfb xauth dpkg-dev nlohmann-json3-dev libsuitesparse-dev"
+  qtxmlpatterns5-dev-tools xvfb xauth dpkg-dev nlohmann-json3-dev libsuitesparse-dev openmpi-bin"
 
 ct_log() { printf '[clothtrack] %s\n' "$*" >&2; }
 ct_die() { printf '[clothtrack] error: %s\n' "$*" >&2; exit 1; }

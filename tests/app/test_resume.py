@@ -17,7 +17,8 @@ import time
 
 RUN_DESCRIBING = ("seconds_total", "seconds_per_frame", "seconds_per_fitted_frame",
                   "stage_seconds", "peak_rss_mb", "resumed_frames", "reused_correspondence_frames",
-                  "reused_landmark_frames", "frame_memory_mb", "frame_reads", "frames_kept_on_disk")
+                  "reused_landmark_frames", "frame_memory_mb", "frame_reads", "frames_kept_on_disk",
+                  "stage_peak_rss_mb", "rank_stage_seconds")
 
 
 def align(app, synth, out, streamed=False):

@@ -346,6 +346,43 @@ TEST(TemplateFit, SideBySideChainsFitAsOneThread)
   }
 }
 
+TEST(TemplateFit, ChainsFittedByTwoCallsEqualOneCall)
+{
+  const SwingingLimb limbs(6, 0.2, 0.03);
+  auto run = [&](ChainSelection selection, std::vector<int>* reported)
+  {
+    SequenceFitHooks hooks = limbs.hooks();
+    hooks.chains = selection;
+    double last = 0.0;
+    hooks.progress = [&last](double done)
+    {
+      last = done;
+      return true;
+    };
+    hooks.fitted = [reported](int k, const FrameFit&) { reported->push_back(k); };
+    auto fits = fitTemplateSequence(limbs.frames[2], 2, 6, hooks);
+    EXPECT_DOUBLE_EQ(last, 1.0);
+    return fits;
+  };
+  std::vector<int> all, before, after;
+  const auto both = run(ChainSelection::Both, &all);
+  const auto backward = run(ChainSelection::Backward, &before);
+  const auto forward = run(ChainSelection::Forward, &after);
+  std::sort(all.begin(), all.end());
+  EXPECT_EQ(before, (std::vector<int>{2, 1, 0}));
+  EXPECT_EQ(after, (std::vector<int>{3, 4, 5}));
+  for (int k = 0; k < 6; ++k)
+  {
+    const FrameFit& own = k <= 2 ? backward[k] : forward[k];
+    const FrameFit& other = k <= 2 ? forward[k] : backward[k];
+    EXPECT_EQ((own.positions - both[k].positions).cwiseAbs().maxCoeff(), 0.0) << "frame " << k;
+    if (k != 2)
+    {
+      EXPECT_EQ(other.positions.rows(), 0) << "frame " << k << " fitted twice";
+    }
+  }
+}
+
 TEST(TemplateFit, ALongSequenceKeepsOnlyWhatItsChainsNeed)
 {
   const SwingingLimb limbs(6, 0.15, 0.02);

@@ -31,6 +31,7 @@ struct Chains
   std::mutex mutex;
   std::condition_variable changed;
   int done = 0;
+  int total = 0; ///< frames of the chains this call fits, the template frame included
   bool stop = false;
   /// One chain after the other on the calling thread, which then reports progress itself.
   bool reportInline = false;
@@ -121,7 +122,7 @@ struct Chains
     if (fitted && hooks.fitted) hooks.fitted(k, fits[k]);
     ++done;
     changed.notify_all();
-    if (reportInline && hooks.progress && !hooks.progress(static_cast<double>(done) / fits.size()))
+    if (reportInline && hooks.progress && !hooks.progress(static_cast<double>(done) / total))
       throw Error("Template fit: cancelled.");
   }
 
@@ -183,7 +184,7 @@ struct Chains
   }
 
   /// Reports progress until both chains have ended; a cancel stops them.
-  void report(int numFrames)
+  void report()
   {
     std::unique_lock<std::mutex> lock(mutex);
     int reported = -1;
@@ -192,7 +193,7 @@ struct Chains
       if (done != reported && !stop && hooks.progress)
       {
         reported = done;
-        if (!hooks.progress(static_cast<double>(reported) / numFrames))
+        if (!hooks.progress(static_cast<double>(reported) / total))
         {
           failure = std::make_exception_ptr(Error("Template fit: cancelled."));
           stop = true;
@@ -215,6 +216,12 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
   if (!hooks.frame) throw Error("Template fit: no frame source.");
   std::vector<FrameFit> fits(numFrames);
   Chains chains(templateMesh, templateFrame, hooks, options, fits);
+  const bool backward = hooks.chains != ChainSelection::Forward;
+  const bool forward = hooks.chains != ChainSelection::Backward;
+  chains.total = (backward ? templateFrame + 1 : 0) + (forward ? numFrames - templateFrame - 1 : 0);
+  if (!backward) // the other call reports the template frame; this one starts from it
+    fits[templateFrame].positions = templateMesh.V;
+  else
   {
     const std::lock_guard<std::mutex> lock(chains.mutex);
     if (!chains.resume(templateFrame))
@@ -236,20 +243,22 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
     --chains.runningChains;
     chains.changed.notify_all();
   };
-  if (threadCount() > 1 && templateFrame > 0 && templateFrame + 1 < numFrames)
+  const int backwardEnd = backward ? -1 : templateFrame - 1;
+  const int forwardEnd = forward ? numFrames : templateFrame + 1;
+  if (threadCount() > 1 && backwardEnd < templateFrame - 1 && forwardEnd > templateFrame + 1)
   {
     chains.runningChains = 2;
-    std::thread backward(chain, templateFrame - 1, -1, -1);
-    std::thread forward(chain, templateFrame + 1, numFrames, +1);
-    chains.report(numFrames);
-    backward.join();
-    forward.join();
+    std::thread backwardChain(chain, templateFrame - 1, backwardEnd, -1);
+    std::thread forwardChain(chain, templateFrame + 1, forwardEnd, +1);
+    chains.report();
+    backwardChain.join();
+    forwardChain.join();
   }
   else
   {
     chains.reportInline = true;
-    chains.run(templateFrame - 1, -1, -1);
-    chains.run(templateFrame + 1, numFrames, +1);
+    chains.run(templateFrame - 1, backwardEnd, -1);
+    chains.run(templateFrame + 1, forwardEnd, +1);
   }
   if (chains.failure) std::rethrow_exception(chains.failure);
   if (hooks.progress) hooks.progress(1.0);

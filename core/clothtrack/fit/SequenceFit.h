@@ -17,6 +17,15 @@ namespace clothtrack
 /// Turns the fit of frame `from` into the start of frame k (e.g. landmarkStartPrediction).
 using StartPrediction = std::function<Points(int k, int from, const Points& fitOfFrom)>;
 
+/// Which chains one call fits. Processes that share a sequence each fit one chain (both start
+/// from the template); the backward chain's call also reports the template frame.
+enum class ChainSelection
+{
+  Both,
+  Backward, ///< the template frame and the frames before it
+  Forward   ///< the frames after the template frame
+};
+
 /// What the chains read and where their results go. Every callback is called one at a time
 /// (never by both chains at once), and what it returns is copied at once.
 struct SequenceFitHooks
@@ -56,6 +65,8 @@ struct SequenceFitHooks
   /// chain has started from them (its mean surface distance is kept), so that memory does not
   /// grow with the sequence. Resumed frames are dropped too.
   bool keepFits = true;
+  /// The frames of the chains not selected are left unfitted (empty, `fitted` not called).
+  ChainSelection chains = ChainSelection::Both;
 };
 
 /// Fits the template through all `numFrames` frames. Throws Error (naming the frame) when a fit
