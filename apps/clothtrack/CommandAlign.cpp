@@ -20,6 +20,7 @@
 #include "ctPointCloudFile.h"
 
 #include <clothtrack/base/Error.h>
+#include <clothtrack/base/MemoryReuse.h>
 #include <clothtrack/base/Parallel.h>
 #include <clothtrack/eval/SequenceQuality.h>
 #include <clothtrack/fit/MotionPrediction.h>
@@ -471,6 +472,8 @@ void runFitStage(Run& run, const AlignedOutput& output)
   keepSolverStates(run, writer, hooks);
   hooks.fitted = [&](int k, const FrameFit& fit)
   {
+    // Every few frames, what the frames before them left in the allocator's heaps goes back.
+    if (k % 16 == 0) releaseFreedMemory();
     errorsOf(k, fit.positions);
     // Once frame k is written, the state of the frame before it is no longer needed.
     const int previous = k < j ? k + 1 : k - 1;
@@ -682,6 +685,7 @@ template <class Stage> void timed(Run& run, const char* name, const Stage& stage
 {
   const auto start = Clock::now();
   stage();
+  releaseFreedMemory();
   run.stageSeconds[name] = since(start);
   run.stagePeakMemory[name] = peakMemoryMB(); // where the peak was reached
 }

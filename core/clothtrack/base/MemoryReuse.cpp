@@ -15,4 +15,11 @@ void keepFreedMemoryForReuse()
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
 }
+
+void releaseFreedMemory()
+{
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
 } // namespace clothtrack
