@@ -42,6 +42,9 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
   TemplateFitOptions& fit = s.fit;
   options.add_options()("solver", po::value(&s.solver)->default_value(s.solver),
                         "template fit solver: exact or lbfgs")(
+      "chains", po::value(&s.chains),
+      "chains of the template fit (default 2, or the processes under mpirun if more): past two, "
+      "each side of the template is split and each chain's key frame is fitted from the template")(
       "solver-tolerance", po::value(&fit.solverTolerance)->default_value(fit.solverTolerance),
       "exact solver: relative residual of each stage's last round")(
       "intermediate-tolerance",
@@ -146,6 +149,7 @@ void check(const AlignSettings& s)
   const TemplateFitOptions& fit = s.fit;
   const PatchCorrespondenceOptions& patches = s.patches;
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
+  if (s.chains < 0 || s.chains == 1) throw UsageError{"--chains must be 2 or more"};
   if (!(s.frameMemoryMB >= 0)) throw UsageError{"--frame-memory must be 0 or more (MB)"};
   if (s.factorBackend != "block" && s.factorBackend != "cholmod")
     throw UsageError{"--factor-backend must be block or cholmod (got '" + s.factorBackend + "')"};
@@ -210,6 +214,7 @@ nlohmann::json AlignSettings::fitKey() const
           {"body_start", startFromBody},
           {"use_correspondence", fit.useCorrespondence},
           {"retry_doubtful", retryDoubtful},
+          {"chains", chains},
           {"stages", stagesJson(fit.stages)}};
 }
 

@@ -35,6 +35,8 @@ struct AlignSettings
   std::string factorBackend = factorBackendName(FactorBackend::Block);
   SequenceOptions sequence;
   int threads = 0;
+  /// Chains of the template fit (sequenceChains); 0: two, or one per process under mpirun.
+  int chains = 0;
   int forcedTemplate = -1; ///< -1: chosen automatically
   TemplateSelectionOptions selection;
   TruthAnchorOptions truth;

@@ -349,22 +349,36 @@ void keepSolverStates(const Run& run, BackgroundWriter& writer, SequenceFitHooks
   { writer.submit([path = solverStatePath(run, k), state]() { writeFitterState(path, state); }); };
 }
 
-/// The chains this process fits: with several, process 0 fits the backward chain (and reports
-/// the template frame) and process 1 the forward chain, each from the template as one process
-/// would; further processes have none.
-std::optional<ChainSelection> ownChains()
+/// The chains of the template fit: as set, else two (the paper's), or one per process when more
+/// processes share the run.
+int chainCount(const AlignSettings& s)
 {
-  if (ranks::count() == 1) return ChainSelection::Both;
-  if (ranks::rank() > 1) return std::nullopt;
-  return ranks::rank() == 0 ? ChainSelection::Backward : ChainSelection::Forward;
+  return s.chains > 0 ? s.chains : std::max(2, ranks::count());
 }
 
-bool fitsFrame(int k, int templateFrame)
+/// The chains this process fits: chain c on process c mod count(); one process fits them all.
+std::vector<int> ownChains(const AlignSettings& s)
 {
-  const std::optional<ChainSelection> chains = ownChains();
-  if (!chains) return false;
-  return *chains == ChainSelection::Both ||
-         (*chains == ChainSelection::Backward) == (k <= templateFrame);
+  std::vector<int> own;
+  for (int c = ranks::rank(); c < chainCount(s); c += ranks::count()) own.push_back(c);
+  return own;
+}
+
+/// Whether this process fitted frame k (the template frame goes with chain 0).
+bool fitsFrame(const Run& run, int k)
+{
+  const int j = run.templateFrame;
+  const std::vector<FitChain> chains =
+      sequenceChains(run.input.count(), j, chainCount(run.settings));
+  for (int c : ownChains(run.settings))
+  {
+    if (c == 0 && k == j) return true;
+    if (c >= static_cast<int>(chains.size())) continue;
+    const FitChain& chain = chains[c];
+    if ((k - chain.first) * chain.direction >= 0 && (chain.end - k) * chain.direction > 0)
+      return true;
+  }
+  return false;
 }
 
 /// With several processes: the seconds of every frame and whether it was resumed (each process
@@ -374,10 +388,10 @@ void shareFits(Run& run, const AlignedOutput& output,
                const std::function<void(int, const Points&)>& errorsOf)
 {
   if (ranks::count() == 1) return;
-  const int n = run.input.count(), j = run.templateFrame;
+  const int n = run.input.count();
   std::vector<double> shared(2 * n + 1, 0.0);
   for (int k = 0; k < n; ++k)
-    if (fitsFrame(k, j))
+    if (fitsFrame(run, k))
     {
       shared[2 * k] = run.fits[k].seconds;
       shared[2 * k + 1] = run.fits[k].resumed;
@@ -388,7 +402,7 @@ void shareFits(Run& run, const AlignedOutput& output,
   if (!ranks::leader()) return;
   for (int k = 0; k < n; ++k)
   {
-    if (fitsFrame(k, j)) continue;
+    if (fitsFrame(run, k)) continue;
     std::optional<FrameFit> fit = output.earlier(run.input.frameNumber[k]);
     if (!fit)
       throw Error(output.framePath(run.input.frameNumber[k]).string() +
@@ -493,10 +507,10 @@ void runFitStage(Run& run, const AlignedOutput& output)
     progress.step(static_cast<int>(n * done + 0.5));
     return true;
   };
-  const std::optional<ChainSelection> chains = ownChains();
-  if (chains) hooks.chains = *chains;
-  run.fits = chains ? fitTemplateSequence(run.templateMesh(), j, n, hooks, s.fit)
-                    : std::vector<FrameFit>(n);
+  hooks.chainCount = chainCount(s);
+  hooks.fitChains = ownChains(s);
+  run.fits = hooks.fitChains.empty() ? std::vector<FrameFit>(n)
+                                     : fitTemplateSequence(run.templateMesh(), j, n, hooks, s.fit);
   writer.finish();
   ranks::barrier(); // every process has written its frames
   progress.finish();

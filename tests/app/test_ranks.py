@@ -1,5 +1,6 @@
 """clothtrack align under mpirun with 2 processes gives the aligned frames and metrics of one
-process, bit for bit, with each process's stage seconds; an error on the processes ends them all
+process, bit for bit, with the default chains and with 3 (two on one process, key frames fitted
+from the template), with each process's stage seconds; an error on the processes ends them all
 with exit code 1 and a readable line, not a hang.
 
 Usage: test_ranks.py MPIEXEC APP WORK. The run-describing metrics (timings, memory, processes,
@@ -22,6 +23,41 @@ def mpirun(mpiexec, count):
     return [mpiexec, "--oversubscribe", "-np", str(count)]
 
 
+def compare(mpiexec, app, work, common, chains):
+    """One process against two, with the default chains or `chains` of them."""
+    suffix = "" if chains is None else f"_{chains}_chains"
+    extra = [] if chains is None else ["--chains", str(chains)]
+    one, two = os.path.join(work, "one" + suffix), os.path.join(work, "two" + suffix)
+    with open(one + ".log", "w") as log:
+        subprocess.run([app, "align"] + common + extra + ["-o", one, "--threads", "2"], check=True,
+                       stdout=log, stderr=subprocess.STDOUT, timeout=600)
+    with open(two + ".log", "w") as log:
+        # The two processes also keep no frame in memory: streamed and shared at once.
+        code = subprocess.run(mpirun(mpiexec, 2) + [app, "align"] + common + extra +
+                              ["-o", two, "--frame-memory", "0"], stdout=log,
+                              stderr=subprocess.STDOUT, timeout=600).returncode
+    if code != 0:
+        sys.exit(f"mpirun -np 2 clothtrack align failed with exit code {code}; see {two}.log")
+    for name in sorted(os.listdir(os.path.join(one, "aligned"))):
+        if not filecmp.cmp(os.path.join(one, "aligned", name), os.path.join(two, "aligned", name),
+                           shallow=False):
+            sys.exit(f"{name} differs between 1 and 2 processes{suffix}")
+    a = json.load(open(os.path.join(one, "metrics.json")))
+    b = json.load(open(os.path.join(two, "metrics.json")))
+    differing = sorted(k for k in set(a) | set(b) if k not in RUN_DESCRIBING and a.get(k) != b.get(k))
+    if differing:
+        sys.exit(f"metrics differ between 1 and 2 processes{suffix}: " + ", ".join(differing))
+    if a["ranks"] != 1 or b["ranks"] != 2 or len(b["rank_stage_seconds"]) != 2:
+        sys.exit(f"ranks: {a['ranks']} and {b['ranks']} (expected 1 and 2), "
+                 f"{len(b['rank_stage_seconds'])} processes' seconds (expected 2)")
+    if not all(r["fit"] > 0 and r["correspond"] > 0 for r in b["rank_stage_seconds"]):
+        sys.exit(f"a process did no fit or correspondence: {b['rank_stage_seconds']}")
+    if os.path.exists(os.path.join(two, "work", "rank_1")):
+        sys.exit("the second process left its frames' copies in the work folder")
+    print(f"{len(os.listdir(os.path.join(one, 'aligned')))} frames and {len(a)} metrics identical"
+          f"{suffix}")
+
+
 def main():
     mpiexec, app, work = sys.argv[1], sys.argv[2], sys.argv[3]
     os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
@@ -34,34 +70,8 @@ def main():
     # The template in the middle, so that both processes have a chain to fit.
     common = [os.path.join(synth, "frames"), "--ground-truth", os.path.join(synth, "ground_truth"),
               "--no-report", "--template", "2"]
-    one, two = os.path.join(work, "one"), os.path.join(work, "two")
-    with open(os.path.join(work, "one.log"), "w") as log:
-        subprocess.run([app, "align"] + common + ["-o", one, "--threads", "2"], check=True,
-                       stdout=log, stderr=subprocess.STDOUT, timeout=600)
-    with open(os.path.join(work, "two.log"), "w") as log:
-        # The two processes also keep no frame in memory: streamed and shared at once.
-        code = subprocess.run(mpirun(mpiexec, 2) + [app, "align"] + common +
-                              ["-o", two, "--frame-memory", "0"], stdout=log,
-                              stderr=subprocess.STDOUT, timeout=600).returncode
-    if code != 0:
-        sys.exit(f"mpirun -np 2 clothtrack align failed with exit code {code}; see {work}/two.log")
-
-    for name in sorted(os.listdir(os.path.join(one, "aligned"))):
-        if not filecmp.cmp(os.path.join(one, "aligned", name), os.path.join(two, "aligned", name),
-                           shallow=False):
-            sys.exit(f"{name} differs between 1 and 2 processes")
-    a = json.load(open(os.path.join(one, "metrics.json")))
-    b = json.load(open(os.path.join(two, "metrics.json")))
-    differing = sorted(k for k in set(a) | set(b) if k not in RUN_DESCRIBING and a.get(k) != b.get(k))
-    if differing:
-        sys.exit("metrics differ between 1 and 2 processes: " + ", ".join(differing))
-    if a["ranks"] != 1 or b["ranks"] != 2 or len(b["rank_stage_seconds"]) != 2:
-        sys.exit(f"ranks: {a['ranks']} and {b['ranks']} (expected 1 and 2), "
-                 f"{len(b['rank_stage_seconds'])} processes' seconds (expected 2)")
-    if not all(r["fit"] > 0 and r["correspond"] > 0 for r in b["rank_stage_seconds"]):
-        sys.exit(f"a process did no fit or correspondence: {b['rank_stage_seconds']}")
-    if os.path.exists(os.path.join(two, "work", "rank_1")):
-        sys.exit("the second process left its frames' copies in the work folder")
+    for chains in (None, 3):
+        compare(mpiexec, app, work, common, chains)
 
     # A bad input: every process stops, exit code 1, the error named once per process at most.
     missing = os.path.join(work, "no_such_folder")
@@ -70,8 +80,7 @@ def main():
                          capture_output=True, text=True, timeout=120)
     if bad.returncode == 0 or missing not in bad.stderr:
         sys.exit(f"a missing input under mpirun: exit code {bad.returncode}, stderr:\n{bad.stderr}")
-    print(f"ranks test passed: 2 processes, {len(os.listdir(os.path.join(one, 'aligned')))} "
-          f"frames and {len(a)} metrics identical to one process")
+    print("ranks test passed: 2 processes give the frames and metrics of one, with 2 and 3 chains")
 
 
 if __name__ == "__main__":

@@ -349,10 +349,10 @@ TEST(TemplateFit, SideBySideChainsFitAsOneThread)
 TEST(TemplateFit, ChainsFittedByTwoCallsEqualOneCall)
 {
   const SwingingLimb limbs(6, 0.2, 0.03);
-  auto run = [&](ChainSelection selection, std::vector<int>* reported)
+  auto run = [&](std::vector<int> fitChains, std::vector<int>* reported)
   {
     SequenceFitHooks hooks = limbs.hooks();
-    hooks.chains = selection;
+    hooks.fitChains = std::move(fitChains);
     double last = 0.0;
     hooks.progress = [&last](double done)
     {
@@ -365,10 +365,9 @@ TEST(TemplateFit, ChainsFittedByTwoCallsEqualOneCall)
     return fits;
   };
   std::vector<int> all, before, after;
-  const auto both = run(ChainSelection::Both, &all);
-  const auto backward = run(ChainSelection::Backward, &before);
-  const auto forward = run(ChainSelection::Forward, &after);
-  std::sort(all.begin(), all.end());
+  const auto both = run({}, &all);
+  const auto backward = run({0}, &before);
+  const auto forward = run({1}, &after);
   EXPECT_EQ(before, (std::vector<int>{2, 1, 0}));
   EXPECT_EQ(after, (std::vector<int>{3, 4, 5}));
   for (int k = 0; k < 6; ++k)
@@ -380,6 +379,51 @@ TEST(TemplateFit, ChainsFittedByTwoCallsEqualOneCall)
     {
       EXPECT_EQ(other.positions.rows(), 0) << "frame " << k << " fitted twice";
     }
+  }
+}
+
+TEST(TemplateFit, ChainsSplitTheSidesInProportion)
+{
+  auto spans = [](int n, int j, int count)
+  {
+    std::vector<std::vector<int>> out;
+    for (const FitChain& c : sequenceChains(n, j, count))
+      out.push_back({c.first, c.end, c.direction});
+    return out;
+  };
+  using Spans = std::vector<std::vector<int>>;
+  EXPECT_EQ(spans(10, 3, 2), (Spans{{2, -1, -1}, {4, 10, 1}}));
+  EXPECT_EQ(spans(10, 0, 2), (Spans{{1, 10, 1}})); // one side: one chain, as the paper
+  EXPECT_EQ(spans(10, 3, 4), (Spans{{2, -1, -1}, {4, 6, 1}, {6, 8, 1}, {8, 10, 1}}));
+  EXPECT_EQ(spans(10, 0, 3), (Spans{{1, 4, 1}, {4, 7, 1}, {7, 10, 1}}));
+  EXPECT_EQ(spans(3, 1, 8), (Spans{{0, -1, -1}, {2, 3, 1}})); // at most a chain per frame
+  EXPECT_TRUE(spans(1, 0, 4).empty());
+  EXPECT_THROW(sequenceChains(5, 2, 0), Error);
+}
+
+TEST(TemplateFit, MoreChainsStartTheirKeyFramesFromTheTemplate)
+{
+  const SwingingLimb limbs(8, 0.1, 0.02);
+  auto run = [&](int count, std::vector<int> fitChains)
+  {
+    SequenceFitHooks hooks = limbs.hooks();
+    hooks.chainCount = count;
+    hooks.fitChains = std::move(fitChains);
+    return fitTemplateSequence(limbs.frames[2], 2, 8, hooks);
+  };
+  // Four chains: 1..0 backward, then 3, 4..5 and 6..7 forward; the last two start from the
+  // template at frames 4 and 6.
+  const auto two = run(2, {}), four = run(4, {}), odd = run(4, {1, 3}), even = run(4, {0, 2});
+  for (int k = 0; k < 8; ++k)
+  {
+    const FrameFit& split = (k <= 2 || k == 4 || k == 5) ? even[k] : odd[k];
+    ASSERT_EQ(split.positions.rows(), four[k].positions.rows()) << "frame " << k;
+    EXPECT_EQ((split.positions - four[k].positions).cwiseAbs().maxCoeff(), 0.0) << "frame " << k;
+    if (k <= 3) // the chains next to the template are the two-chain fit's
+    {
+      EXPECT_EQ((four[k].positions - two[k].positions).cwiseAbs().maxCoeff(), 0.0) << "frame " << k;
+    }
+    EXPECT_LT(meanError(four[k].positions, limbs.frames[k].V), 0.01) << "frame " << k;
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -126,9 +127,10 @@ struct Chains
       throw Error("Template fit: cancelled.");
   }
 
-  /// Fits frames from, from + direction, ... up to `to` (excluded).
-  void run(int from, int to, int direction)
+  /// Fits the chain's frames; its first starts from the template frame's fit.
+  void run(const FitChain& chain)
   {
+    const int from = chain.first, to = chain.end, direction = chain.direction;
     try
     {
       TemplateFitter fitter(templateMesh, options);
@@ -144,8 +146,8 @@ struct Chains
             finish(k, false);
             continue;
           }
-          const int previous = k - direction;
-          if (fits[previous].resumed && previous != from - direction && hooks.resumedState)
+          const int previous = k == from ? templateFrame : k - direction;
+          if (k != from && fits[previous].resumed && hooks.resumedState)
             earlierState = hooks.resumedState(previous);
           in.frame = hooks.frame(k);
           if (!in.frame) throw Error("Frame " + std::to_string(k) + ": no frame to fit.");
@@ -206,6 +208,44 @@ struct Chains
 };
 } // namespace
 
+std::vector<FitChain> sequenceChains(int numFrames, int templateFrame, int count)
+{
+  if (count < 1) throw Error("Template fit: " + std::to_string(count) + " chains.");
+  const int before = templateFrame, after = numFrames - templateFrame - 1;
+  if (before + after == 0) return {};
+  // Up to two: one chain on each side that has frames (the paper's). More: in proportion to each
+  // side's frames, at least one on a side that has frames, at most one per frame.
+  int backward = before > 0, forward = after > 0;
+  if (count > 2)
+  {
+    backward = before == 0  ? 0
+               : after == 0 ? count
+                            : std::clamp(static_cast<int>(std::lround(static_cast<double>(count) *
+                                                                      before / (before + after))),
+                                         1, count - 1);
+    forward = after == 0 ? 0 : count - backward;
+    backward = std::min(backward, before);
+    forward = std::min(forward, after);
+  }
+  std::vector<FitChain> chains;
+  // Backward: the segment next to the template first, each fitted from its template-side end.
+  for (int c = 0; c < backward; ++c)
+  {
+    const int high = before - static_cast<int>(static_cast<long long>(before) * c / backward);
+    const int low = before - static_cast<int>(static_cast<long long>(before) * (c + 1) / backward);
+    chains.push_back({high - 1, low - 1, -1});
+  }
+  for (int c = 0; c < forward; ++c)
+  {
+    const int low =
+        templateFrame + 1 + static_cast<int>(static_cast<long long>(after) * c / forward);
+    const int high =
+        templateFrame + 1 + static_cast<int>(static_cast<long long>(after) * (c + 1) / forward);
+    chains.push_back({low, high, +1});
+  }
+  return chains;
+}
+
 std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int templateFrame,
                                           int numFrames, const SequenceFitHooks& hooks,
                                           const TemplateFitOptions& options)
@@ -216,49 +256,55 @@ std::vector<FrameFit> fitTemplateSequence(const TriangleMesh& templateMesh, int 
   if (!hooks.frame) throw Error("Template fit: no frame source.");
   std::vector<FrameFit> fits(numFrames);
   Chains chains(templateMesh, templateFrame, hooks, options, fits);
-  const bool backward = hooks.chains != ChainSelection::Forward;
-  const bool forward = hooks.chains != ChainSelection::Backward;
-  chains.total = (backward ? templateFrame + 1 : 0) + (forward ? numFrames - templateFrame - 1 : 0);
-  if (!backward) // the other call reports the template frame; this one starts from it
+  const std::vector<FitChain> all = sequenceChains(numFrames, templateFrame, hooks.chainCount);
+  std::vector<FitChain> own;
+  for (int c = 0; c < static_cast<int>(all.size()); ++c)
+    if (hooks.fitChains.empty() ||
+        std::find(hooks.fitChains.begin(), hooks.fitChains.end(), c) != hooks.fitChains.end())
+      own.push_back(all[c]);
+  // The call that fits the first chain (or, in a sequence of one frame, every call) reports the
+  // template frame; every call starts from it.
+  const bool reportsTemplate =
+      hooks.fitChains.empty() || all.empty() ||
+      std::find(hooks.fitChains.begin(), hooks.fitChains.end(), 0) != hooks.fitChains.end();
+  chains.total = reportsTemplate;
+  for (const FitChain& c : own) chains.total += c.frames();
+  if (!reportsTemplate)
     fits[templateFrame].positions = templateMesh.V;
   else
   {
     const std::lock_guard<std::mutex> lock(chains.mutex);
     if (!chains.resume(templateFrame))
     {
-      FrameFit& own = fits[templateFrame];
-      own.positions = templateMesh.V;
-      own.used.assign(templateMesh.numVertices(), 0);
-      own.surfaceDistance = Eigen::VectorXd::Zero(templateMesh.numVertices());
-      own.meanSurfaceDistance = 0.0;
+      FrameFit& self = fits[templateFrame];
+      self.positions = templateMesh.V;
+      self.used.assign(templateMesh.numVertices(), 0);
+      self.surfaceDistance = Eigen::VectorXd::Zero(templateMesh.numVertices());
+      self.meanSurfaceDistance = 0.0;
       chains.finish(templateFrame, true);
     }
     else
       chains.finish(templateFrame, false);
   }
-  auto chain = [&](int from, int to, int direction)
+  auto chain = [&](const FitChain& c)
   {
-    chains.run(from, to, direction);
+    chains.run(c);
     const std::lock_guard<std::mutex> lock(chains.mutex);
     --chains.runningChains;
     chains.changed.notify_all();
   };
-  const int backwardEnd = backward ? -1 : templateFrame - 1;
-  const int forwardEnd = forward ? numFrames : templateFrame + 1;
-  if (threadCount() > 1 && backwardEnd < templateFrame - 1 && forwardEnd > templateFrame + 1)
+  if (threadCount() > 1 && own.size() > 1)
   {
-    chains.runningChains = 2;
-    std::thread backwardChain(chain, templateFrame - 1, backwardEnd, -1);
-    std::thread forwardChain(chain, templateFrame + 1, forwardEnd, +1);
+    chains.runningChains = static_cast<int>(own.size());
+    std::vector<std::thread> threads;
+    for (const FitChain& c : own) threads.emplace_back(chain, c);
     chains.report();
-    backwardChain.join();
-    forwardChain.join();
+    for (std::thread& t : threads) t.join();
   }
   else
   {
     chains.reportInline = true;
-    chains.run(templateFrame - 1, backwardEnd, -1);
-    chains.run(templateFrame + 1, forwardEnd, +1);
+    for (const FitChain& c : own) chains.run(c);
   }
   if (chains.failure) std::rethrow_exception(chains.failure);
   if (hooks.progress) hooks.progress(1.0);

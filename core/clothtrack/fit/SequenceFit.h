@@ -1,8 +1,9 @@
 #pragma once
 // Stage 3 over a sequence, in the paper's order (Shehu et al. 2016, section 4.3): the template
 // frame j keeps the template; frames j-1 .. 0 and j+1 .. N-1 are fitted one after the other,
-// each started from its neighbour's fit. The two chains are independent and run side by side
-// when threadCount() > 1, each with its own TemplateFitter (a fitter keeps its factorisations).
+// each started from its neighbour's fit. The chains are independent (more than two: see
+// sequenceChains) and run side by side when threadCount() > 1, each with its own TemplateFitter
+// (a fitter keeps its factorisations).
 #include "TemplateFit.h"
 
 #include <clothtrack/base/Progress.h>
@@ -17,14 +18,21 @@ namespace clothtrack
 /// Turns the fit of frame `from` into the start of frame k (e.g. landmarkStartPrediction).
 using StartPrediction = std::function<Points(int k, int from, const Points& fitOfFrom)>;
 
-/// Which chains one call fits. Processes that share a sequence each fit one chain (both start
-/// from the template); the backward chain's call also reports the template frame.
-enum class ChainSelection
+/// One chain of frames fitted one after the other: first, first + direction, ... up to `end`
+/// (excluded); the first starts from the template, each next one from its neighbour's fit.
+struct FitChain
 {
-  Both,
-  Backward, ///< the template frame and the frames before it
-  Forward   ///< the frames after the template frame
+  int first = 0, end = 0, direction = 1;
+  int frames() const { return (end - first) * direction; }
 };
+
+/// The chains of a sequence fit. Up to two: the paper's, backward and forward from the template
+/// frame. More: each side split into consecutive chains in proportion to its frames; a chain away
+/// from the template starts at its key frame (the end nearer the template) from the template
+/// itself, template to frame (the start prediction moves it there), so that chains are
+/// independent and can run on different processes. Backward chains come first, nearest the
+/// template first.
+std::vector<FitChain> sequenceChains(int numFrames, int templateFrame, int count);
 
 /// What the chains read and where their results go. Every callback is called one at a time
 /// (never by both chains at once), and what it returns is copied at once.
@@ -65,8 +73,12 @@ struct SequenceFitHooks
   /// chain has started from them (its mean surface distance is kept), so that memory does not
   /// grow with the sequence. Resumed frames are dropped too.
   bool keepFits = true;
-  /// The frames of the chains not selected are left unfitted (empty, `fitted` not called).
-  ChainSelection chains = ChainSelection::Both;
+  /// How many chains the sequence is fitted in (sequenceChains).
+  int chainCount = 2;
+  /// The chains this call fits (indices into sequenceChains); empty for all. The others' frames
+  /// are left unfitted (empty, `fitted` not called). The call that fits chain 0 reports the
+  /// template frame.
+  std::vector<int> fitChains;
 };
 
 /// Fits the template through all `numFrames` frames. Throws Error (naming the frame) when a fit
