@@ -238,21 +238,14 @@ Input readInput(const AlignSettings& s, const fs::path& work)
         f.truthFile = allTruth[k];
         TriangleMesh t = loadFrame(f.truthFile, truthConventions);
         if (truthFaces < 0) truthFaces = t.numFaces();
-        if (t.numFaces() != truthFaces)
-          throw UsageError{f.truthFile + ": the ground truth must keep one connectivity (" +
-                           std::to_string(t.numFaces()) + " triangles; " +
-                           std::to_string(truthFaces) + " in the first frame)"};
+        checkTruthConnectivity(f.truthFile, t, truthFaces);
         f.truthProblem = groundTruthMismatch(mesh, t, f.truthRefused);
         truth.add(k, std::move(t));
       }
       frames.add(k, std::move(mesh));
       scanned.push_back(std::move(f));
     }
-    catch (const UsageError&)
-    {
-      throw;
-    }
-    catch (const Error& e)
+    catch (const Error& e) // a UsageError (not an Error) stops the run
     {
       if (!s.skipBadFrames) throw;
       std::fprintf(stderr, "warning: %s (frame left out)\n", e.what());

@@ -15,12 +15,17 @@ std::vector<TriangleMesh> loadGroundTruth(const std::vector<std::string>& files,
   for (const std::string& file : files)
   {
     truth.push_back(loadFrame(file, conventions));
-    if (truth.back().numFaces() != truth.front().numFaces())
-      throw UsageError{file + ": the ground truth must keep one connectivity (" +
-                       std::to_string(truth.back().numFaces()) + " triangles; " +
-                       std::to_string(truth.front().numFaces()) + " in the first frame)"};
+    checkTruthConnectivity(file, truth.back(), truth.front().numFaces());
   }
   return truth;
+}
+
+void checkTruthConnectivity(const std::string& file, const TriangleMesh& truth, int firstFaces)
+{
+  if (truth.numFaces() != firstFaces)
+    throw UsageError{file + ": the ground truth must keep one connectivity (" +
+                     std::to_string(truth.numFaces()) + " triangles; " +
+                     std::to_string(firstFaces) + " in the first frame)"};
 }
 
 void addVertexErrorMetrics(nlohmann::json& metrics, const std::vector<Eigen::VectorXd>& errors,

@@ -18,6 +18,10 @@ namespace clothtrack::app
 std::vector<TriangleMesh> loadGroundTruth(const std::vector<std::string>& files,
                                           const FrameConventions& conventions);
 
+/// UsageError naming `file` when this ground-truth frame breaks the connectivity of the first
+/// (`firstFaces` triangles).
+void checkTruthConnectivity(const std::string& file, const TriangleMesh& truth, int firstFaces);
+
 /// Vertex errors against a ground truth (one vector per frame): mean_vertex_error_m, within_10cm,
 /// per_frame_* lists, cumulative_error, ...
 void addVertexErrorMetrics(nlohmann::json& metrics, const std::vector<Eigen::VectorXd>& errors,
