@@ -28,46 +28,64 @@ template <class T> bool get(std::istream& in, T& value)
   return static_cast<bool>(in.read(reinterpret_cast<char*>(&value), sizeof(value)));
 }
 
-nlohmann::json vec(const Vec3& v)
-{
-  return {v.x(), v.y(), v.z()};
-}
-Vec3 vec(const nlohmann::json& j)
-{
-  return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
-}
 } // namespace
 
-nlohmann::json bodyFitJson(const std::string& modelPath, const std::vector<std::string>& files,
-                           const BodyStage& stage)
+void writeBodyFitJson(const std::string& path, const std::string& modelPath,
+                      const std::vector<std::string>& files, const BodyStage& stage)
 {
-  nlohmann::json frames = nlohmann::json::array();
-  for (size_t k = 0; k < stage.body.frames.size(); ++k)
-    frames.push_back(bodyFrameJson(files[k], stage.body.frames[k]));
   const Eigen::VectorXd& beta = stage.body.beta;
-  return {{"model", modelPath},
-          {"beta", std::vector<double>(beta.data(), beta.data() + beta.size())},
-          {"per_frame", frames}};
+  const nlohmann::json head = {
+      {"model", modelPath}, {"beta", std::vector<double>(beta.data(), beta.data() + beta.size())}};
+  std::string text = head.dump(1);
+  text.pop_back(); // the closing brace: the frames follow
+  AtomicTextFile file(path);
+  file << text << ",\n \"per_frame\": [";
+  for (size_t k = 0; k < stage.body.frames.size(); ++k)
+    file << (k ? ",\n" : "\n") << bodyFrameJson(files[k], stage.body.frames[k]).dump();
+  file << "\n ]\n}\n";
+  file.commit();
 }
 
-void writeBodyStage(const std::string& path, const nlohmann::json& key, const nlohmann::json& body,
-                    const BodyStage& stage)
+void writeBodyStage(const std::string& path, const nlohmann::json& key,
+                    const std::vector<std::string>& files, const BodyStage& stage)
 {
-  nlohmann::json frames = nlohmann::json::array();
-  for (const FrameLandmarks& frame : stage.landmarks)
+  const Eigen::VectorXd& beta = stage.body.beta;
+  AtomicTextFile file(path);
+  file << nlohmann::json({{"key", key},
+                          {"beta", std::vector<double>(beta.data(), beta.data() + beta.size())},
+                          {"frames", stage.landmarks.size()}})
+              .dump()
+       << "\n";
+  for (size_t k = 0; k < stage.landmarks.size(); ++k)
   {
-    nlohmann::json list = nlohmann::json::array();
-    for (const OrientedSurfacePoint& p : frame)
-      list.push_back({{"id", p.id},
-                      {"face", p.face},
-                      {"bary", vec(p.bary)},
-                      {"direction", vec(p.direction)},
-                      {"offset", p.offset}});
-    frames.push_back(list);
+    nlohmann::json landmarks = nlohmann::json::array();
+    for (const OrientedSurfacePoint& p : stage.landmarks[k])
+      landmarks.push_back({p.id, p.face, p.bary.x(), p.bary.y(), p.bary.z(), p.direction.x(),
+                           p.direction.y(), p.direction.z(), p.offset});
+    const nlohmann::json body =
+        k < stage.body.frames.size() ? bodyFrameJson(files[k], stage.body.frames[k]) : nullptr;
+    file << nlohmann::json({{"body", body}, {"landmarks", landmarks}}).dump() << "\n";
   }
-  writeTextAtomically(
-      path, nlohmann::json({{"key", key}, {"body", body}, {"landmarks", frames}}).dump() + "\n");
+  file.commit();
 }
+
+namespace
+{
+FrameLandmarks frameLandmarks(const nlohmann::json& list)
+{
+  FrameLandmarks out;
+  for (const auto& p : list)
+  {
+    if (p.size() != 9) throw std::runtime_error("not a landmark");
+    out.push_back({p[0].get<int>(),
+                   p[1].get<int>(),
+                   {p[2].get<double>(), p[3].get<double>(), p[4].get<double>()},
+                   {p[5].get<double>(), p[6].get<double>(), p[7].get<double>()},
+                   p[8].get<double>()});
+  }
+  return out;
+}
+} // namespace
 
 std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::json& key)
 {
@@ -75,25 +93,23 @@ std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::
   if (!in) return std::nullopt;
   try
   {
-    const nlohmann::json j = nlohmann::json::parse(in);
-    if (j.at("key") != key) return std::nullopt;
+    std::string line;
+    if (!std::getline(in, line)) return std::nullopt;
+    const nlohmann::json head = nlohmann::json::parse(line);
+    if (head.at("key") != key) return std::nullopt;
     BodyStage out;
-    const nlohmann::json& body = j.at("body");
-    const std::vector<double> beta = body.at("beta").get<std::vector<double>>();
+    const std::vector<double> beta = head.at("beta").get<std::vector<double>>();
     out.body.beta =
         Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
-    for (const auto& frame : body.at("per_frame"))
+    const auto frames = head.at("frames").get<size_t>();
+    out.landmarks.reserve(frames);
+    while (out.landmarks.size() < frames && std::getline(in, line))
     {
-      out.body.frames.push_back(bodyFrameFit(frame));
+      const nlohmann::json record = nlohmann::json::parse(line);
+      if (!record.at("body").is_null()) out.body.frames.push_back(bodyFrameFit(record["body"]));
+      out.landmarks.push_back(frameLandmarks(record.at("landmarks")));
     }
-    for (const auto& frame : j.at("landmarks"))
-    {
-      FrameLandmarks list;
-      for (const auto& p : frame)
-        list.push_back({p.at("id").get<int>(), p.at("face").get<int>(), vec(p.at("bary")),
-                        vec(p.at("direction")), p.at("offset").get<double>()});
-      out.landmarks.push_back(std::move(list));
-    }
+    if (out.landmarks.size() != frames) return std::nullopt; // cut short
     return out;
   }
   catch (const std::exception&) // unreadable or of another model

@@ -23,15 +23,18 @@ struct BodyStage
   std::vector<FrameLandmarks> landmarks;
 };
 
-/// The fitted body in the layout of the body_fit.json of 'clothtrack body-fit' (its per-frame
-/// figures apart): model, beta, and per frame the file, status, pose and rest_pose_distance.
-/// OUT/body_fit.json, for the report and for users; the landmark cache holds it too.
-nlohmann::json bodyFitJson(const std::string& modelPath, const std::vector<std::string>& files,
-                           const BodyStage& stage);
+/// Writes the fitted body in the layout of the body_fit.json of 'clothtrack body-fit' (its
+/// per-frame figures apart): model, beta, and per frame the file, status, pose and
+/// rest_pose_distance. OUT/body_fit.json, for the report and for users. Written frame by frame:
+/// no document of the whole sequence is built.
+void writeBodyFitJson(const std::string& path, const std::string& modelPath,
+                      const std::vector<std::string>& files, const BodyStage& stage);
 
-/// The body stage with the key of the inputs it came from.
-void writeBodyStage(const std::string& path, const nlohmann::json& key, const nlohmann::json& body,
-                    const BodyStage& stage);
+/// The body stage with the key of the inputs it came from, as JSON lines: the key and the shape
+/// first, then one line per frame (its body fit and landmarks), written and read a frame at a
+/// time.
+void writeBodyStage(const std::string& path, const nlohmann::json& key,
+                    const std::vector<std::string>& files, const BodyStage& stage);
 /// Empty when the file is missing, unreadable or was made with another key.
 std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::json& key);
 

@@ -156,9 +156,10 @@ void runBodyStage(Run& run)
 {
   const AlignSettings& s = run.settings;
   const int n = run.input.count();
-  const fs::path cache = run.work / "landmarks.json";
+  const fs::path cache = run.work / "landmarks.jsonl";
   BodyStageOptions options;
   options.registerFrames = s.registerFrames;
+  options.keepBodyLandmarks = false; // only the seeds are used: a long sequence stays small
   run.landmarkKey = {{"files", run.input.files},  {"model", s.modelPath},
                      {"up", s.sequence.up},       {"unit", s.sequence.unit},
                      {"scale", s.sequence.scale}, {"body_fit", bodyStageKey(options)}};
@@ -192,13 +193,10 @@ void runBodyStage(Run& run)
     progress.finish();
     run.body.body = std::move(result.body);
     run.body.landmarks = std::move(result.landmarks);
-    if (ranks::leader())
-      writeBodyStage(cache.string(), run.landmarkKey,
-                     bodyFitJson(s.modelPath, run.input.files, run.body), run.body);
+    if (ranks::leader()) writeBodyStage(cache.string(), run.landmarkKey, run.input.files, run.body);
   }
   if (!ranks::leader()) return; // the leader writes and warns for all
-  writeTextAtomically((run.out / "body_fit.json").string(),
-                      bodyFitJson(s.modelPath, run.input.files, run.body).dump(1) + "\n");
+  writeBodyFitJson((run.out / "body_fit.json").string(), s.modelPath, run.input.files, run.body);
   warnAboutDiscontinuities(run.body.body, options.fit.neighbourGap);
   warnAboutPoorFits(run.body.body, run.input.files);
   for (int k = 0; k < n; ++k)

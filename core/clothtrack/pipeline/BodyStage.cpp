@@ -48,23 +48,30 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model, const FrameSource& f
   out.body = fitBodySequence(model, frames, fit,
                              [&](double done) { return !progress || progress(fitShare * done); });
   const int n = frames.count();
-  out.bodyLandmarks.resize(n);
-  out.transferred.resize(n);
+  if (options.keepBodyLandmarks)
+  {
+    out.bodyLandmarks.resize(n);
+    out.transferred.resize(n);
+  }
   out.landmarks.resize(n);
   parallelFor(
       0, n,
       [&](int k)
       {
         const BodyFrameFit& fit = out.body.frames[k];
-        out.bodyLandmarks[k] = orientedLandmarks(model, model.posed(out.body.beta, fit.pose));
-        out.transferred[k].resize(out.bodyLandmarks[k].size());
-        if (fit.status == BodyFitStatus::Failed) return;
-        const FramePtr frame = frames.frame(k);
-        if (!frame) return;
-        const SurfaceLocator locator(*frame);
-        out.transferred[k] =
-            transferLandmarks(out.bodyLandmarks[k], *frame, locator, options.transfer);
-        out.landmarks[k] = landmarkSeeds(out.transferred[k]);
+        std::vector<OrientedPoint> bodyPoints =
+            orientedLandmarks(model, model.posed(out.body.beta, fit.pose));
+        std::vector<TransferredLandmark> transferred(bodyPoints.size());
+        const FramePtr frame = fit.status == BodyFitStatus::Failed ? FramePtr() : frames.frame(k);
+        if (frame)
+        {
+          const SurfaceLocator locator(*frame);
+          transferred = transferLandmarks(bodyPoints, *frame, locator, options.transfer);
+          out.landmarks[k] = landmarkSeeds(transferred);
+        }
+        if (!options.keepBodyLandmarks) return;
+        out.bodyLandmarks[k] = std::move(bodyPoints);
+        out.transferred[k] = std::move(transferred);
       },
       1);
   if (progress && !progress(1.0)) throw Error("Body fit: cancelled.");

@@ -27,6 +27,9 @@ struct BodyStageOptions
   bool registerFrames = false;
   RigidRegistrationOptions registration;
   double minimumRegistrationOverlap = 0.5;
+  /// False: BodyStageResult::bodyLandmarks and transferred stay empty and only the seeds
+  /// (`landmarks`) are kept, a third of the memory per frame.
+  bool keepBodyLandmarks = true;
 };
 
 /// BodyFitOptions::frameMotion by generalized ICP: nullopt where the registration did not
@@ -39,9 +42,11 @@ using FrameLandmarks = std::vector<OrientedSurfacePoint>;
 struct BodyStageResult
 {
   BodyFitResult body;
-  /// Per frame, the model's oriented landmarks on the fitted body, in the model's order.
+  /// Per frame, the model's oriented landmarks on the fitted body, in the model's order (empty
+  /// unless BodyStageOptions::keepBodyLandmarks).
   std::vector<std::vector<OrientedPoint>> bodyLandmarks;
-  /// Per frame, each of them carried onto the frame (invalid where not found).
+  /// Per frame, each of them carried onto the frame (invalid where not found; empty unless
+  /// keepBodyLandmarks).
   std::vector<std::vector<TransferredLandmark>> transferred;
   /// Per frame, the valid ones as surface points: the input of stages 2 and 3.
   std::vector<FrameLandmarks> landmarks;
