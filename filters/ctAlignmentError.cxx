@@ -1,4 +1,5 @@
 #include "ctAlignmentError.h"
+#include "ctFirstPieceOnly.h"
 #include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
@@ -120,6 +121,7 @@ void addCumulativeRows(vtkTable* curveTable, const clothtrack::SequenceErrors& s
 int ctAlignmentError::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                   vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   using namespace clothtrack;
   auto* aligned = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
   auto* truthSequence = vtkMultiBlockDataSet::GetData(inputVector[1], 0);

@@ -1,4 +1,5 @@
 #include "ctBodyFit.h"
+#include "ctFirstPieceOnly.h"
 #include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
@@ -193,6 +194,7 @@ clothtrack::BodyStageOptions ctBodyFit::StageOptions() const
 int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                            vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   using namespace clothtrack;
   auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
   const int n = sequence ? static_cast<int>(sequence->GetNumberOfBlocks()) : 0;

@@ -2,6 +2,7 @@
 
 #include "ctBodyModelIO.h"
 #include "ctBuiltinBodyModel.h"
+#include "ctFirstPieceOnly.h"
 #include "ctLandmarkPolyData.h"
 #include "ctMeshConversion.h"
 
@@ -90,6 +91,7 @@ vtkPolyData* ctBodyModelSource::GetLandmarksOutput()
 int ctBodyModelSource::RequestData(vtkInformation*, vtkInformationVector**,
                                    vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   using namespace clothtrack;
   try
   {

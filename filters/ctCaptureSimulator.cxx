@@ -2,6 +2,7 @@
 
 #include "ctArrayNames.h"
 #include "ctCaptureSimulation.h"
+#include "ctFirstPieceOnly.h"
 #include "ctMeshConversion.h"
 
 #include <clothtrack/base/Error.h>
@@ -18,6 +19,7 @@ vtkStandardNewMacro(ctCaptureSimulator);
 int ctCaptureSimulator::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   try

@@ -1,5 +1,6 @@
 #include "ctGeodesicDistance.h"
 
+#include "ctFirstPieceOnly.h"
 #include "ctMeshConversion.h"
 
 #include <clothtrack/base/Error.h>
@@ -34,6 +35,7 @@ void ctGeodesicDistance::ClearSourcePoints()
 int ctGeodesicDistance::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->ShallowCopy(input);

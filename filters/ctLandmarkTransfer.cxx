@@ -1,4 +1,5 @@
 #include "ctLandmarkTransfer.h"
+#include "ctFirstPieceOnly.h"
 #include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
@@ -36,6 +37,7 @@ ctLandmarkTransfer::ctLandmarkTransfer()
 int ctLandmarkTransfer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   using namespace clothtrack;
   vtkPolyData* frameData = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* body = vtkPolyData::GetData(inputVector[1], 0);

@@ -1,4 +1,5 @@
 #include "ctPatchCorrespondence.h"
+#include "ctFirstPieceOnly.h"
 #include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
@@ -230,6 +231,7 @@ int ctPatchCorrespondence::ChooseTemplate(const Inputs& in, vtkMultiBlockDataSet
 int ctPatchCorrespondence::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                        vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   using namespace clothtrack;
   auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
   auto* landmarkBlocks = vtkMultiBlockDataSet::GetData(inputVector[1], 0);

@@ -1,6 +1,7 @@
 #include "ctSequencePlayer.h"
 
 #include "ctArrayNames.h"
+#include "ctFirstPieceOnly.h"
 
 #include <vtkAlgorithmOutput.h>
 #include <vtkDataArray.h>
@@ -97,6 +98,7 @@ int ctSequencePlayer::RequestUpdateExtent(vtkInformation*, vtkInformationVector*
 int ctSequencePlayer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                   vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0]);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   auto* output = vtkPolyData::GetData(outInfo);

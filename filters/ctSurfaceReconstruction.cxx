@@ -1,5 +1,6 @@
 #include "ctSurfaceReconstruction.h"
 
+#include "ctFirstPieceOnly.h"
 #include "ctMeshConversion.h"
 #include "ctPointCloudFile.h"
 
@@ -33,6 +34,7 @@ void addField(vtkPolyData* output, const char* name, ValueT value)
 int ctSurfaceReconstruction::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                          vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   try

@@ -1,5 +1,6 @@
 #include "ctSurfaceTopology.h"
 
+#include "ctFirstPieceOnly.h"
 #include "ctNamedArrays.h"
 
 #include "ctMeshConversion.h"
@@ -24,6 +25,7 @@ vtkStandardNewMacro(ctSurfaceTopology);
 int ctSurfaceTopology::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                    vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   try

@@ -3,6 +3,7 @@
 #include "ctArrayNames.h"
 #include "ctBuiltinBodyModel.h"
 #include "ctCaptureSimulation.h"
+#include "ctFirstPieceOnly.h"
 #include "ctMeshConversion.h"
 #include "ctRequestedPortOnly.h"
 #include "ctSyntheticSequence.h"
@@ -74,6 +75,7 @@ int ctSyntheticCapture::RequestInformation(vtkInformation*, vtkInformationVector
 int ctSyntheticCapture::RequestData(vtkInformation* request, vtkInformationVector**,
                                     vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   using namespace clothtrack;
   auto& in = *this->Internal;
   try

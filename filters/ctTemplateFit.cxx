@@ -1,4 +1,5 @@
 #include "ctTemplateFit.h"
+#include "ctFirstPieceOnly.h"
 #include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
@@ -318,6 +319,7 @@ void addSummaryRows(vtkTable* table, const std::vector<clothtrack::FrameFit>& fi
 int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   using namespace clothtrack;
   auto* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
   auto* correspondence = vtkMultiBlockDataSet::GetData(inputVector[1], 0);

@@ -1,4 +1,5 @@
 #include "ctTemplateSelection.h"
+#include "ctFirstPieceOnly.h"
 #include "ctOptionProperty.h"
 
 #include "ctArrayNames.h"
@@ -105,6 +106,7 @@ void addCriteriaRows(vtkTable* table, const clothtrack::TemplateSelection& selec
 int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                      vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   using namespace clothtrack;
   vtkMultiBlockDataSet* sequence = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
   ThreadBudget threads(this->NumberOfThreads);

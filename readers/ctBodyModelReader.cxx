@@ -1,6 +1,7 @@
 #include "ctBodyModelReader.h"
 
 #include "ctBodyModelIO.h"
+#include "ctFirstPieceOnly.h"
 
 #include <clothtrack/base/Error.h>
 
@@ -19,6 +20,7 @@ ctBodyModelReader::ctBodyModelReader()
 int ctBodyModelReader::RequestData(vtkInformation*, vtkInformationVector**,
                                    vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   try
   {
     // Read through the model type so that every array is checked, then write it back out.

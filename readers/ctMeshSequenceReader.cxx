@@ -1,6 +1,7 @@
 #include "ctMeshSequenceReader.h"
 
 #include "ctArrayNames.h"
+#include "ctFirstPieceOnly.h"
 #include "ctMeshConversion.h"
 #include "ctPointCloudFile.h"
 #include "ctRequestedPortOnly.h"
@@ -171,6 +172,7 @@ vtkPolyData* ctMeshSequenceReader::ReadFrame(int index)
 int ctMeshSequenceReader::RequestData(vtkInformation* request, vtkInformationVector**,
                                       vtkInformationVector* outputVector)
 {
+  if (clothtrack::leaveOtherPieceEmpty(outputVector)) return 1;
   auto& in = *this->Internal;
   if (in.Frames.empty())
   {

@@ -1,6 +1,7 @@
 #include "ctMeshSequenceWriter.h"
 
 #include "ctArrayNames.h"
+#include "ctFirstPieceOnly.h"
 #include "ctMeshConversion.h"
 
 #include <clothtrack/base/Error.h>
@@ -46,6 +47,7 @@ vtkTypeBool ctMeshSequenceWriter::ProcessRequest(vtkInformation* request,
   }
   if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
   {
+    clothtrack::requestProcessPiece(inInfo); // the whole sequence arrives on the first process
     if (!this->InputTimes.empty() &&
         this->CurrentTimeIndex < static_cast<int>(this->InputTimes.size()))
       inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(),
@@ -60,6 +62,14 @@ vtkTypeBool ctMeshSequenceWriter::ProcessRequest(vtkInformation* request,
     vtkErrorMacro(<< "no output file name set");
     this->SetErrorCode(vtkErrorCode::NoFileNameError);
     return 0;
+  }
+  if (clothtrack::processIndex() > 0)
+  {
+    // The first process writes the files; the others' pieces are empty.
+    request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+    this->CurrentTimeIndex = 0;
+    this->NumberOfFramesWritten = 0;
+    return 1;
   }
   vtkDataObject* input = inInfo->Get(vtkDataObject::DATA_OBJECT());
   if (this->CurrentTimeIndex == 0)

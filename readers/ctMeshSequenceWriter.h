@@ -7,7 +7,8 @@
  * vtkMultiBlockDataSet holding one vtkPolyData per frame (time k / FrameRate, or the frame's
  * TimeValue field), or a temporal vtkPolyData, in which case every time step of the input is
  * requested and written in turn. With WriteOBJ on, each frame is also written as `.obj`.
- * Every file is written under a temporary name and renamed when complete.
+ * Every file is written under a temporary name and renamed when complete. When several
+ * processes share the pipeline (pvbatch --mpi), the first one writes the whole sequence.
  */
 #ifndef ctMeshSequenceWriter_h
 #define ctMeshSequenceWriter_h
