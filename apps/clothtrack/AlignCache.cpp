@@ -2,6 +2,7 @@
 
 #include "BodyFitRun.h"
 #include "Commands.h"
+#include "StoredLandmarks.h"
 #include "TextFile.h"
 
 #include <nlohmann/json.hpp>
@@ -47,7 +48,7 @@ void writeBodyFitJson(const std::string& path, const std::string& modelPath,
 }
 
 void writeBodyStage(const std::string& path, const nlohmann::json& key,
-                    const std::vector<std::string>& files, const BodyStage& stage)
+                    const std::vector<std::string>& files, BodyStage& stage)
 {
   const Eigen::VectorXd& beta = stage.body.beta;
   AtomicTextFile file(path);
@@ -56,40 +57,24 @@ void writeBodyStage(const std::string& path, const nlohmann::json& key,
                           {"frames", stage.landmarks.size()}})
               .dump()
        << "\n";
+  stage.lineOffsets.clear();
+  stage.landmarkCounts.clear();
   for (size_t k = 0; k < stage.landmarks.size(); ++k)
   {
-    nlohmann::json landmarks = nlohmann::json::array();
-    for (const OrientedSurfacePoint& p : stage.landmarks[k])
-      landmarks.push_back({p.id, p.face, p.bary.x(), p.bary.y(), p.bary.z(), p.direction.x(),
-                           p.direction.y(), p.direction.z(), p.offset});
     const nlohmann::json body =
         k < stage.body.frames.size() ? bodyFrameJson(files[k], stage.body.frames[k]) : nullptr;
-    file << nlohmann::json({{"body", body}, {"landmarks", landmarks}}).dump() << "\n";
+    stage.lineOffsets.push_back(static_cast<std::int64_t>(file.written()));
+    stage.landmarkCounts.push_back(static_cast<int>(stage.landmarks[k].size()));
+    file
+        << nlohmann::json({{"body", body}, {"landmarks", landmarksJson(stage.landmarks[k])}}).dump()
+        << "\n";
   }
   file.commit();
 }
 
-namespace
-{
-FrameLandmarks frameLandmarks(const nlohmann::json& list)
-{
-  FrameLandmarks out;
-  for (const auto& p : list)
-  {
-    if (p.size() != 9) throw std::runtime_error("not a landmark");
-    out.push_back({p[0].get<int>(),
-                   p[1].get<int>(),
-                   {p[2].get<double>(), p[3].get<double>(), p[4].get<double>()},
-                   {p[5].get<double>(), p[6].get<double>(), p[7].get<double>()},
-                   p[8].get<double>()});
-  }
-  return out;
-}
-} // namespace
-
 std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::json& key)
 {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
   try
   {
@@ -102,14 +87,17 @@ std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::
     out.body.beta =
         Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
     const auto frames = head.at("frames").get<size_t>();
-    out.landmarks.reserve(frames);
-    while (out.landmarks.size() < frames && std::getline(in, line))
+    auto offset = static_cast<std::int64_t>(in.tellg());
+    while (out.lineOffsets.size() < frames && std::getline(in, line))
     {
       const nlohmann::json record = nlohmann::json::parse(line);
       if (!record.at("body").is_null()) out.body.frames.push_back(bodyFrameFit(record["body"]));
-      out.landmarks.push_back(frameLandmarks(record.at("landmarks")));
+      out.lineOffsets.push_back(offset);
+      out.landmarkCounts.push_back(
+          static_cast<int>(landmarksFromJson(record.at("landmarks")).size()));
+      offset = static_cast<std::int64_t>(in.tellg());
     }
-    if (out.landmarks.size() != frames) return std::nullopt; // cut short
+    if (out.lineOffsets.size() != frames) return std::nullopt; // cut short
     return out;
   }
   catch (const std::exception&) // unreadable or of another model

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,7 +21,12 @@ namespace clothtrack::app
 struct BodyStage
 {
   BodyFitResult body;
+  /// Per frame, its landmarks as the body fit found them; empty when read back from the work
+  /// folder (StoredLandmarks reads them there when needed).
   std::vector<FrameLandmarks> landmarks;
+  /// Per frame, where its line starts in the work folder's file and how many landmarks it holds.
+  std::vector<std::int64_t> lineOffsets;
+  std::vector<int> landmarkCounts;
 };
 
 /// Writes the fitted body in the layout of the body_fit.json of 'clothtrack body-fit' (its
@@ -33,9 +39,11 @@ void writeBodyFitJson(const std::string& path, const std::string& modelPath,
 /// The body stage with the key of the inputs it came from, as JSON lines: the key and the shape
 /// first, then one line per frame (its body fit and landmarks), written and read a frame at a
 /// time.
+/// Fills the stage's lineOffsets and landmarkCounts.
 void writeBodyStage(const std::string& path, const nlohmann::json& key,
-                    const std::vector<std::string>& files, const BodyStage& stage);
-/// Empty when the file is missing, unreadable or was made with another key.
+                    const std::vector<std::string>& files, BodyStage& stage);
+/// Empty when the file is missing, unreadable or was made with another key. The landmarks stay
+/// in the file: lineOffsets and landmarkCounts say where.
 std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::json& key);
 
 /// Stage 2 output for one frame: the template vertices' targets.

@@ -59,7 +59,7 @@ struct AlignSettings
   /// Megabytes of frames (input and ground truth each) kept in memory between their uses; past
   /// it, frames are read again from cleaned copies in the work folder. Peak memory then no
   /// longer grows with the sequence's length.
-  double frameMemoryMB = 128;
+  double frameMemoryMB = 64;
 
   /// The body fit gives the landmarks (correspondences, start prediction) and the poses that
   /// choose the template; when none of these is wanted, it is skipped.

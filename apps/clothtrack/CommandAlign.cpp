@@ -14,6 +14,7 @@
 #include "Ranks.h"
 #include "ReconstructRun.h"
 #include "Report.h"
+#include "StoredLandmarks.h"
 #include "TextFile.h"
 
 #include "ctMeshConversion.h"
@@ -89,6 +90,7 @@ struct Run
   fs::path out, work;
   nlohmann::json stageSeconds, stagePeakMemory, landmarkKey, correspondenceKey;
   BodyStage body;
+  StoredLandmarks landmarks; ///< each frame's, read from the body stage's file when needed
   int templateFrame = -1;
   std::string templateDecidedBy = "given";
   /// The template posed by each frame's fitted body: fit starts, and their judge. Empty when
@@ -164,7 +166,7 @@ void runBodyStage(Run& run)
                      {"up", s.sequence.up},       {"unit", s.sequence.unit},
                      {"scale", s.sequence.scale}, {"body_fit", bodyStageKey(options)}};
   run.body = {};
-  run.body.landmarks.resize(n);
+  run.landmarks = StoredLandmarks(n);
   if (!s.needLandmarks())
   {
     std::fprintf(stderr, "body fit: skipped (no correspondence term, no start prediction, "
@@ -172,10 +174,11 @@ void runBodyStage(Run& run)
     return;
   }
   if (auto cached = readBodyStage(cache.string(), run.landmarkKey);
-      cached && static_cast<int>(cached->landmarks.size()) == n &&
+      cached && static_cast<int>(cached->lineOffsets.size()) == n &&
       static_cast<int>(cached->body.frames.size()) == n)
   {
     run.body = std::move(*cached);
+    run.landmarks = StoredLandmarks(cache.string(), run.body.lineOffsets, run.body.landmarkCounts);
     run.reusedLandmarks = n;
     std::fprintf(stderr, "body fit: landmarks of %d frames reused from %s\n", n, cache.c_str());
   }
@@ -193,14 +196,22 @@ void runBodyStage(Run& run)
     progress.finish();
     run.body.body = std::move(result.body);
     run.body.landmarks = std::move(result.landmarks);
-    if (ranks::leader()) writeBodyStage(cache.string(), run.landmarkKey, run.input.files, run.body);
+    if (ranks::leader())
+    {
+      writeBodyStage(cache.string(), run.landmarkKey, run.input.files, run.body);
+      run.landmarks =
+          StoredLandmarks(cache.string(), run.body.lineOffsets, run.body.landmarkCounts);
+    }
+    else
+      run.landmarks = StoredLandmarks(std::move(run.body.landmarks));
+    run.body.landmarks = {}; // read again from the file when needed
   }
   if (!ranks::leader()) return; // the leader writes and warns for all
   writeBodyFitJson((run.out / "body_fit.json").string(), s.modelPath, run.input.files, run.body);
   warnAboutDiscontinuities(run.body.body, options.fit.neighbourGap);
   warnAboutPoorFits(run.body.body, run.input.files);
   for (int k = 0; k < n; ++k)
-    if (run.body.landmarks[k].empty())
+    if (run.landmarks.count(k) == 0)
       std::fprintf(stderr,
                    "warning: %s: no landmark found; the frame is fitted to its surface "
                    "alone\n",
@@ -303,14 +314,18 @@ void runCorrespondenceStage(Run& run, const AlignedOutput& output)
                      std::to_string(missing.size()) +
                      " frames with this template and these options (run 'clothtrack "
                      "correspond' with the same input, options and work folder first)"};
-  const TemplatePatches patches(run.templateMesh(), run.body.landmarks[run.templateFrame], p);
+  run.landmarks.keep(run.templateFrame);
+  const TemplatePatches patches(run.templateMesh(), run.landmarks[run.templateFrame], p);
   const int count = static_cast<int>(missing.size());
   Progress progress("correspond", count);
   correspondFrames(
       patches, run.templateFrame, missing, [&](int k) { return run.input.frame(k); },
-      [&](int k) -> const FrameLandmarks& { return run.body.landmarks[k]; },
+      [&](int k) -> const FrameLandmarks& { return run.landmarks[k]; },
       [&](int k, FrameCorrespondence&& c)
-      { writeTargets(targetPath(run, k).string(), run.input.files[k], vertexTargets(c)); },
+      {
+        writeTargets(targetPath(run, k).string(), run.input.files[k], vertexTargets(c));
+        run.landmarks.release(k);
+      },
       [&](double done)
       {
         progress.step(static_cast<int>(count * done + 0.5));
@@ -379,6 +394,18 @@ bool fitsFrame(const Run& run, int k)
   return false;
 }
 
+/// The frame whose fit frame k starts from: the one before it in its chain, or the template
+/// frame for a chain's first frame; -1 for the template frame itself.
+int chainPredecessor(const Run& run, int k)
+{
+  const int j = run.templateFrame;
+  if (k == j) return -1;
+  for (const FitChain& chain : sequenceChains(run.input.count(), j, chainCount(run.settings)))
+    if ((k - chain.first) * chain.direction >= 0 && (chain.end - k) * chain.direction > 0)
+      return k == chain.first ? j : k - chain.direction;
+  return -1;
+}
+
 /// With several processes: the seconds of every frame and whether it was resumed (each process
 /// knows its own frames'), and on the leader the other processes' fits read back from
 /// OUT/aligned with their errors, as its own would be after the fit.
@@ -441,7 +468,7 @@ void addInputHooks(Run& run, SequenceFitHooks& hooks, VertexTargets& targets)
   if (s.prediction.predictRadius > 0)
     hooks.start = landmarkStartPrediction(
         [r](int k) { return r->input.frame(k); },
-        [r](int k) -> const FrameLandmarks& { return r->body.landmarks[k]; }, s.prediction);
+        [r](int k) -> const FrameLandmarks& { return r->landmarks[k]; }, s.prediction);
   if (static_cast<int>(run.body.body.frames.size()) == n)
   {
     BodyModel ownModel;
@@ -487,9 +514,11 @@ void runFitStage(Run& run, const AlignedOutput& output)
     // Every few frames, what the frames before them left in the allocator's heaps goes back.
     if (k % 16 == 0) releaseFreedMemory();
     errorsOf(k, fit.positions);
-    // Once frame k is written, the state of the frame before it is no longer needed.
-    const int previous = k < j ? k + 1 : k - 1;
-    const std::string used = k != j && previous != j ? solverStatePath(run, previous) : "";
+    // Once frame k is written, the state and landmarks of the frame its chain fitted before it
+    // are no longer needed (the template frame's stay: every chain starts from it).
+    const int previous = chainPredecessor(run, k);
+    const std::string used = previous >= 0 && previous != j ? solverStatePath(run, previous) : "";
+    if (previous != j) run.landmarks.release(previous);
     // The writer gets copies: the chain moves on to the next frame at once.
     writer.submit(
         [&output, number = in.frameNumber[k], fit, errors = run.errors[k], used]()
@@ -619,7 +648,8 @@ nlohmann::json evaluate(const Run& run, const AlignedOutput& output)
   metrics["predict_radius_m"] = s.prediction.predictRadius;
   metrics["landmark_consensus_m"] = s.prediction.landmarkConsensus;
   std::vector<double> landmarkCounts;
-  for (const auto& l : run.body.landmarks) landmarkCounts.push_back(static_cast<double>(l.size()));
+  for (int k = 0; k < run.landmarks.frames(); ++k)
+    landmarkCounts.push_back(static_cast<double>(run.landmarks.count(k)));
   metrics["landmarks_per_frame"] = landmarkCounts;
   if (in.truth) addVertexErrorMetrics(metrics, run.errors, j, s.truthInput, run.verticesWithTruth);
   if (in.markers)

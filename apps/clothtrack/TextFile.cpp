@@ -26,6 +26,7 @@ AtomicTextFile::~AtomicTextFile()
 AtomicTextFile& AtomicTextFile::operator<<(std::string_view text)
 {
   out_.write(text.data(), static_cast<std::streamsize>(text.size()));
+  written_ += text.size();
   return *this;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Writing text outputs (JSON, CSV) so that no half-written file is ever taken for a result:
 // write beside, then rename.
+#include <cstdint>
 #include <fstream>
 #include <string>
 #include <string_view>
@@ -24,10 +25,13 @@ public:
   AtomicTextFile& operator<<(std::string_view text);
   /// Flushes, closes and renames; UsageError when any write failed.
   void commit();
+  /// Bytes written so far: where the next piece starts in the file.
+  std::uint64_t written() const { return written_; }
 
 private:
   std::string path_;
   std::ofstream out_;
   bool committed_ = false;
+  std::uint64_t written_ = 0;
 };
 } // namespace clothtrack::app
