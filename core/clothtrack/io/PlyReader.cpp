@@ -135,6 +135,22 @@ public:
     }
   }
 
+  size_t position() const { return pos_; }
+  void seek(size_t position) { pos_ = position; }
+
+  /// An ASCII word that is a plain decimal integer, read and passed; false (and nothing passed)
+  /// for anything else, which read() then handles.
+  [[gnu::always_inline]] bool readAsciiInteger(long& value)
+  {
+    const char* last = data_.data() + data_.size();
+    const char* start = data_.data() + pos_;
+    while (start < last && isAsciiSpace(*start)) ++start;
+    const auto [end, error] = std::from_chars(start, last, value);
+    if (error != std::errc() || end == start || (end < last && !isAsciiSpace(*end))) return false;
+    pos_ = static_cast<size_t>(end - data_.data());
+    return true;
+  }
+
 private:
   template <class T> static double as(const unsigned char* bytes)
   {
@@ -353,8 +369,29 @@ PlyContents readPLYContents(const std::string& path)
       if (withColours) slot[colour[k]] = 6 + k;
     }
     std::vector<int> polygon;
+    // ASCII triangles of a face element holding only its index list: read as integers straight
+    // into the mesh. Anything else (a polygon, an index out of range, a word that is not a plain
+    // integer) is read again by the general path below, which also names what is wrong.
+    const bool asciiFaceList = format == Format::Ascii && isFace && e.properties.size() == 1 &&
+                               indexProperty == 0 && isIntegral(e.properties[0].countType) &&
+                               isIntegral(e.properties[0].type);
+    auto readTriangle = [&]()
+    {
+      const size_t start = cursor.position();
+      long n = 0, a = 0, b = 0, c = 0;
+      if (cursor.readAsciiInteger(n) && n == 3 && cursor.readAsciiInteger(a) &&
+          cursor.readAsciiInteger(b) && cursor.readAsciiInteger(c) && haveVertices &&
+          std::max({a, b, c}) < numVertices && std::min({a, b, c}) >= 0)
+      {
+        faces.add(static_cast<int>(a), static_cast<int>(b), static_cast<int>(c));
+        return true;
+      }
+      cursor.seek(start);
+      return false;
+    };
     for (long i = 0; i < e.count; ++i)
     {
+      if (asciiFaceList && readTriangle()) continue;
       double record[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
       for (size_t p = 0; p < e.properties.size(); ++p)
       {
