@@ -129,6 +129,42 @@ TEST(MeshIO, PlyAsciiWithExtraElementsAndProperties)
   EXPECT_DOUBLE_EQ(mesh.V(2, 1), 1.0);
 }
 
+// Triangles are read on a fast path; polygons, indices written otherwise (+2, 2.0) and bad
+// indices go through the general one, mixed in one element, with the same result and errors.
+TEST(MeshIO, PlyAsciiTrianglesAndOtherFacesReadAlike)
+{
+  const std::string dir = scratchDir("meshio-ply-faces");
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 5\nproperty double x\n"
+                             "property double y\nproperty double z\nelement face 4\n"
+                             "property list uchar int vertex_indices\nend_header\n"
+                             "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n";
+  const TriangleMesh mesh = readPLY(
+      writeText(dir + "/mixed.ply", header + "3 0 1 4\n4 0 1 2 3\n3 +2 3.0 4\n 3\t3 0\r\n4\n"));
+  ASSERT_EQ(mesh.numFaces(), 5);
+  EXPECT_EQ(mesh.F.row(0), Eigen::RowVector3i(0, 1, 4));
+  EXPECT_EQ(mesh.F.row(1), Eigen::RowVector3i(0, 1, 2));
+  EXPECT_EQ(mesh.F.row(2), Eigen::RowVector3i(0, 2, 3));
+  EXPECT_EQ(mesh.F.row(3), Eigen::RowVector3i(2, 3, 4));
+  EXPECT_EQ(mesh.F.row(4), Eigen::RowVector3i(3, 0, 4));
+  for (const char* bad : {"3 0 1 5\n", "3 0 -1 2\n", "3 0 1\n"})
+  {
+    const std::string path =
+        writeText(dir + "/bad.ply", header + "3 0 1 4\n3 0 1 4\n3 0 1 4\n" + bad);
+    EXPECT_THROW(readPLY(path), Error) << bad;
+  }
+  try
+  {
+    readPLY(writeText(dir + "/range.ply", header + "3 0 1 4\n3 0 1 4\n3 0 1 4\n3 0 9 4\n"));
+    FAIL() << "an index out of range was read";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("face 3 uses vertex index 9, out of range"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(MeshIO, PlyBinaryBothEndiannesses)
 {
   const std::string dir = scratchDir("meshio-plybin");
