@@ -387,9 +387,7 @@ bool fitsFrame(const Run& run, int k)
   {
     if (c == 0 && k == j) return true;
     if (c >= static_cast<int>(chains.size())) continue;
-    const FitChain& chain = chains[c];
-    if ((k - chain.first) * chain.direction >= 0 && (chain.end - k) * chain.direction > 0)
-      return true;
+    if (chains[c].contains(k)) return true;
   }
   return false;
 }
@@ -401,8 +399,7 @@ int chainPredecessor(const Run& run, int k)
   const int j = run.templateFrame;
   if (k == j) return -1;
   for (const FitChain& chain : sequenceChains(run.input.count(), j, chainCount(run.settings)))
-    if ((k - chain.first) * chain.direction >= 0 && (chain.end - k) * chain.direction > 0)
-      return k == chain.first ? j : k - chain.direction;
+    if (chain.contains(k)) return k == chain.first ? j : k - chain.direction;
   return -1;
 }
 

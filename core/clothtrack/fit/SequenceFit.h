@@ -24,6 +24,8 @@ struct FitChain
 {
   int first = 0, end = 0, direction = 1;
   int frames() const { return (end - first) * direction; }
+  /// Whether frame k is one of the chain's.
+  bool contains(int k) const { return (k - first) * direction >= 0 && (end - k) * direction > 0; }
 };
 
 /// The chains of a sequence fit. Up to two: the paper's, backward and forward from the template
