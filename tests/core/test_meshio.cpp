@@ -165,6 +165,43 @@ TEST(MeshIO, PlyAsciiTrianglesAndOtherFacesReadAlike)
   }
 }
 
+TEST(MeshIO, PlyAsciiPositionsAndOtherVerticesReadAlike)
+{
+  // Vertices holding x y z alone take a quicker path than the general one; words it does not take
+  // (a '+' sign, an exponent, hexadecimal) fall back to the general path, which reads them as
+  // strtod does, and a vertex element with more properties, in another order or as integers is
+  // read by the general path from the start: all give the same positions.
+  const std::string dir = scratchDir("meshio-ply-vertices");
+  auto vertexHeader = [](const std::string& properties)
+  {
+    return "ply\nformat ascii 1.0\nelement vertex 3\n" + properties +
+           "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  };
+  const std::string xyz = "property float x\nproperty float y\nproperty float z\n";
+  const TriangleMesh plain =
+      readPLY(writeText(dir + "/plain.ply", vertexHeader(xyz) + "0.25 -1 2\n1.5 0 0\n0 1e-1 -3\n"
+                                                                "3 0 1 2\n"));
+  const TriangleMesh words = readPLY(writeText(
+      dir + "/words.ply", vertexHeader(xyz) + "+0.25 -1.0 2e0\n1.5\t0 0\r\n0x0 0.1 -3\n3 0 1 2\n"));
+  const TriangleMesh wider =
+      readPLY(writeText(dir + "/wider.ply", vertexHeader(xyz + "property uchar red\n") +
+                                                "0.25 -1 2 9\n1.5 0 0 9\n0 0.1 -3 9\n3 0 1 2\n"));
+  const TriangleMesh reordered =
+      readPLY(writeText(dir + "/reordered.ply",
+                        vertexHeader("property float z\nproperty float x\nproperty float y\n") +
+                            "2 0.25 -1\n0 1.5 0\n-3 0 0.1\n3 0 1 2\n"));
+  Points expected(3, 3);
+  expected << 0.25, -1, 2, 1.5, 0, 0, 0, 0.1, -3;
+  for (const TriangleMesh* mesh : {&plain, &words, &wider, &reordered})
+  {
+    ASSERT_EQ(mesh->numVertices(), 3);
+    EXPECT_EQ(mesh->V, expected);
+  }
+  EXPECT_THROW(readPLY(writeText(dir + "/bad.ply", vertexHeader(xyz) + "0 0 0\n1 x 0\n0 1 0\n"
+                                                                       "3 0 1 2\n")),
+               Error);
+}
+
 TEST(MeshIO, PlyBinaryBothEndiannesses)
 {
   const std::string dir = scratchDir("meshio-plybin");
@@ -344,6 +381,41 @@ TEST(MeshIO, PlainDecimalsReadAsStrtodReadsThem)
     ASSERT_EQ(std::memcmp(&value, &expected, sizeof(double)), 0) << text;
   }
   EXPECT_GT(quick, 100000); // most took the fast path
+}
+
+TEST(MeshIO, PlainIntegersReadAsFromCharsReadsThem)
+{
+  // The fast path for plain integers against std::from_chars<long>: where each stops, the value,
+  // and a refusal where it refuses (no digit, out of range), on random words of 0-21 digits with
+  // signs and trailing text.
+  std::mt19937 random(11);
+  std::uniform_int_distribution<int> digit(0, 9), length(0, 21), coin(0, 3);
+  const char* tails[] = {"", " 7", ".5", "/3", "e2", "x"};
+  int quick = 0, refused = 0;
+  for (int trial = 0; trial < 200000; ++trial)
+  {
+    std::string text = coin(random) == 0 ? "-" : coin(random) == 0 ? "+" : "";
+    for (int k = length(random) % (coin(random) == 0 ? 22 : 7); k > 0; --k)
+      text += static_cast<char>('0' + digit(random));
+    text += tails[trial % 6];
+    const char* begin = text.data();
+    const char* end = begin + text.size();
+    long expected = 0, value = 0;
+    const auto [stop, error] = std::from_chars(begin, end, expected);
+    const char* got = readIntegerInPlace(begin, end, value);
+    quick += readPlainInteger(begin, end, value) != nullptr;
+    if (error != std::errc() || stop == begin)
+    {
+      ++refused;
+      ASSERT_EQ(got, nullptr) << text;
+      continue;
+    }
+    ASSERT_EQ(got, stop) << text;
+    readIntegerInPlace(begin, end, value);
+    ASSERT_EQ(value, expected) << text;
+  }
+  EXPECT_GT(quick, 100000);
+  EXPECT_GT(refused, 1000);
 }
 
 TEST(MeshIO, ObjArraysGrowAndShrinkFromTheirEstimate)

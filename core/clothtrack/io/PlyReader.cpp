@@ -138,21 +138,31 @@ public:
   size_t position() const { return pos_; }
   void seek(size_t position) { pos_ = position; }
 
-  /// An ASCII word that is a plain decimal integer, read and passed; false (and nothing passed)
-  /// for anything else, which read() then handles. readAscii keeps its own integer branch:
-  /// calling this one there read ASCII PLY 8 % slower (bench_read, samba frames).
-  [[gnu::always_inline]] bool readAsciiInteger(long& value)
+  /// An ASCII word that is a whole number (long: a decimal integer; double: anything
+  /// std::from_chars takes), read and passed; false (and nothing passed) for anything else, which
+  /// read() then handles. readAscii keeps its own integer branch: calling this one there read
+  /// ASCII PLY 8 % slower (bench_read, samba frames).
+  template <class T> [[gnu::always_inline]] bool readAsciiWord(T& value)
   {
     const char* last = data_.data() + data_.size();
     const char* start = data_.data() + pos_;
     while (start < last && isAsciiSpace(*start)) ++start;
-    const auto [end, error] = std::from_chars(start, last, value);
-    if (error != std::errc() || end == start || (end < last && !isAsciiSpace(*end))) return false;
+    const char* end = readInPlace(start, last, value);
+    if (!end || (end < last && !isAsciiSpace(*end))) return false;
     pos_ = static_cast<size_t>(end - data_.data());
     return true;
   }
 
 private:
+  static const char* readInPlace(const char* p, const char* last, long& value)
+  {
+    return readIntegerInPlace(p, last, value);
+  }
+  static const char* readInPlace(const char* p, const char* last, double& value)
+  {
+    return readNumberInPlace(p, last, value);
+  }
+
   template <class T> static double as(const unsigned char* bytes)
   {
     T value;
@@ -172,8 +182,7 @@ private:
     if (integral)
     {
       long whole = 0;
-      const auto [end, error] = std::from_chars(start, last, whole);
-      if (error == std::errc() && end > start) stop = end;
+      stop = readIntegerInPlace(start, last, whole);
       value = static_cast<double>(whole);
     }
     if (!stop) stop = readNumberInPlace(start, last, value);
@@ -380,11 +389,29 @@ PlyContents readPLYContents(const std::string& path)
     {
       const size_t start = cursor.position();
       long n = 0, a = 0, b = 0, c = 0;
-      if (cursor.readAsciiInteger(n) && n == 3 && cursor.readAsciiInteger(a) &&
-          cursor.readAsciiInteger(b) && cursor.readAsciiInteger(c) && haveVertices &&
-          std::max({a, b, c}) < numVertices && std::min({a, b, c}) >= 0)
+      if (cursor.readAsciiWord(n) && n == 3 && cursor.readAsciiWord(a) && cursor.readAsciiWord(b) &&
+          cursor.readAsciiWord(c) && haveVertices && std::max({a, b, c}) < numVertices &&
+          std::min({a, b, c}) >= 0)
       {
         faces.add(static_cast<int>(a), static_cast<int>(b), static_cast<int>(c));
+        return true;
+      }
+      cursor.seek(start);
+      return false;
+    };
+    // ASCII vertices holding x, y and z alone, in that order and as floating-point numbers (ints
+    // may hold a '3.5' the general path reads differently): read straight into the mesh.
+    const bool asciiPositionsOnly =
+        format == Format::Ascii && isVertex && e.properties.size() == 3 && xyz[0] == 0 &&
+        xyz[1] == 1 && xyz[2] == 2 && !isIntegral(e.properties[0].type) &&
+        !isIntegral(e.properties[1].type) && !isIntegral(e.properties[2].type);
+    auto readPosition = [&]()
+    {
+      const size_t start = cursor.position();
+      double x = 0, y = 0, z = 0;
+      if (cursor.readAsciiWord(x) && cursor.readAsciiWord(y) && cursor.readAsciiWord(z))
+      {
+        coords.add(x, y, z);
         return true;
       }
       cursor.seek(start);
@@ -393,6 +420,7 @@ PlyContents readPLYContents(const std::string& path)
     for (long i = 0; i < e.count; ++i)
     {
       if (asciiFaceList && readTriangle()) continue;
+      if (asciiPositionsOnly && readPosition()) continue;
       double record[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
       for (size_t p = 0; p < e.properties.size(); ++p)
       {

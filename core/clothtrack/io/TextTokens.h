@@ -26,7 +26,7 @@ inline void skipSpaces(const char*& p, const char* end)
 /// division, correctly rounded, gives the double strtod gives (Clinger's fast path). Returns where
 /// the number stops, or null for anything else (an exponent, more digits, a sign '+'), which the
 /// caller reads with std::from_chars. A samba frame's OBJ reads in 0.9 ms instead of 1.07 ms
-/// through std::from_chars alone (integers gain nothing by such a path: from_chars is faster).
+/// through std::from_chars alone.
 inline const char* readPlainDecimal(const char* p, const char* end, double& value)
 {
   static constexpr double powersOfTen[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
@@ -48,6 +48,33 @@ inline const char* readPlainDecimal(const char* p, const char* end, double& valu
   const double magnitude = static_cast<double>(digits) / powersOfTen[fractionDigits];
   value = negative ? -magnitude : magnitude;
   return q;
+}
+
+/// A plain integer, "[-]digits" with at most 18 digits (no overflow is possible), read from `p`:
+/// what std::from_chars<long> reads, in a few instructions a digit where libstdc++'s general
+/// routine (any base, an overflow check per digit) takes about thirty. Returns where it stops,
+/// or null for anything else (no digit, more digits), which the caller reads with
+/// std::from_chars.
+inline const char* readPlainInteger(const char* p, const char* end, long& value)
+{
+  const bool negative = p < end && *p == '-';
+  const char* q = p + negative;
+  const char* first = q;
+  std::uint64_t digits = 0;
+  for (; q < end && static_cast<unsigned>(*q - '0') < 10; ++q)
+    digits = 10 * digits + static_cast<unsigned>(*q - '0');
+  if (q == first || q - first > 18) return nullptr;
+  value = negative ? -static_cast<long>(digits) : static_cast<long>(digits);
+  return q;
+}
+
+/// An integer read from `p`: a plain one quickly, anything else by std::from_chars. Returns where
+/// it stops, or null when `p` starts no integer std::from_chars takes (or one out of range).
+inline const char* readIntegerInPlace(const char* p, const char* end, long& value)
+{
+  if (const char* stop = readPlainInteger(p, end, value)) return stop;
+  const auto [stop, error] = std::from_chars(p, end, value);
+  return error == std::errc() && stop != p ? stop : nullptr;
 }
 
 /// A number read from `p`: a plain decimal quickly, anything else by std::from_chars. Returns where
