@@ -1,6 +1,8 @@
 #include "AlignOptions.h"
 #include "ReconstructRun.h"
 
+#include <clothtrack/body/SkinnedTemplate.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -212,6 +214,7 @@ nlohmann::json AlignSettings::fitKey() const
           {"predict_radius", prediction.predictRadius},
           {"landmark_consensus", prediction.landmarkConsensus},
           {"body_start", startFromBody},
+          {"skinning_revision", kSkinnedTemplateRevision},
           {"use_correspondence", fit.useCorrespondence},
           {"retry_doubtful", retryDoubtful},
           {"chains", chains},

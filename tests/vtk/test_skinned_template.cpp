@@ -8,6 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
 using namespace clothtrack;
 
 namespace
@@ -68,6 +72,75 @@ TEST(SkinnedTemplate, ABentBodyCarriesItsOwnSurfaceCloseToTheModelsSkinning)
   const Eigen::VectorXd error = (carried - skinned).rowwise().norm();
   EXPECT_LT(error.mean(), 0.005);
   EXPECT_LT(error.maxCoeff(), 0.05);
+}
+
+namespace
+{
+/// A flared skirt round the body's hips: `rings` rings of `around` vertices from the pelvis
+/// (radius `top`) down to `drop` below it (radius `hem`), the last ring the hem.
+TriangleMesh skirt(const Vec3& pelvis, double drop, double top, double hem, int rings = 12,
+                   int around = 48)
+{
+  TriangleMesh m;
+  m.V.resize(rings * around, 3);
+  for (int r = 0; r < rings; ++r)
+    for (int a = 0; a < around; ++a)
+    {
+      const double t = r / (rings - 1.0), angle = 2 * M_PI * a / around;
+      const double radius = top + t * (hem - top);
+      m.V.row(r * around + a) << pelvis.x() + radius * std::cos(angle), pelvis.y() - t * drop,
+          pelvis.z() + radius * std::sin(angle);
+    }
+  m.F.resize(2 * (rings - 1) * around, 3);
+  for (int r = 0, f = 0; r + 1 < rings; ++r)
+    for (int a = 0; a < around; ++a)
+    {
+      const int i = r * around + a, j = r * around + (a + 1) % around;
+      m.F.row(f++) << i, j + around, j;
+      m.F.row(f++) << i, i + around, j + around;
+    }
+  return m;
+}
+} // namespace
+
+TEST(SkinnedTemplate, ClothHangingAwayFromTheBodyFollowsThePartItHangsFrom)
+{
+  // The hem of a wide skirt is nearest to one leg's surface, but hangs from the hips: bound to
+  // the nearest body vertex, each side of the hem swings with one thigh; bound by part, it
+  // follows the pelvis, and the skirt's top, close to the body, keeps its nearest vertices.
+  const Eigen::VectorXd beta = Eigen::VectorXd::Zero(4);
+  const TriangleMesh body = model().posed(beta, BodyPose());
+  const PosedSkeleton skeleton = posedSkeleton(model(), beta, BodyPose());
+  const Vec3 pelvis = skeleton.joints.row(Pelvis).transpose();
+  const double drop = pelvis.y() - skeleton.joints(LeftKnee, 1);
+  const TriangleMesh dress = skirt(pelvis, drop, 0.17, 0.45);
+  SkinnedTemplateOptions nearestOnly{0};
+  nearestOnly.partBindingDistance = std::numeric_limits<double>::infinity();
+  const SkinnedTemplate byPart(dress, body.V, model().weights, skeleton, {0});
+  const SkinnedTemplate nearest(dress, body.V, model().weights, skeleton, nearestOnly);
+  const int around = 48, hemStart = dress.numVertices() - around;
+  auto legShare = [&](const SkinnedTemplate& bound, int first, int count)
+  {
+    double legs = 0.0;
+    for (int i = first; i < first + count; ++i)
+      for (int j : {LeftHip, LeftKnee, RightHip, RightKnee}) legs += bound.weights()(i, j);
+    return legs / count;
+  };
+  for (int i = hemStart; i < dress.numVertices(); ++i)
+  {
+    Eigen::Index hangsFrom, nearestJoint;
+    byPart.weights().row(i).maxCoeff(&hangsFrom);
+    nearest.weights().row(i).maxCoeff(&nearestJoint);
+    EXPECT_EQ(hangsFrom, Pelvis) << "hem vertex " << i;
+    const bool left = dress.V(i, 0) > pelvis.x() + 0.05, right = dress.V(i, 0) < pelvis.x() - 0.05;
+    if (left || right)
+    {
+      EXPECT_TRUE(nearestJoint == LeftHip || nearestJoint == RightHip) << "hem vertex " << i;
+    }
+  }
+  EXPECT_LT(legShare(byPart, hemStart, around), legShare(nearest, hemStart, around) - 0.3);
+  EXPECT_GT(legShare(nearest, hemStart, around), 0.8);
+  EXPECT_EQ(byPart.weights().topRows(around), nearest.weights().topRows(around));
 }
 
 TEST(SkinnedTemplate, WeightsOfTheWrongSizeAreAClearError)

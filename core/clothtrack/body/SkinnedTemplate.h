@@ -1,7 +1,8 @@
 #pragma once
 // The template bound to the fitted body: every template vertex takes the skinning weights of the
-// body near it at the template frame (smoothed over the template, so that cloth spanning two
-// limbs, a skirt between the legs, blends them instead of tearing), and is then carried to any
+// body near it at the template frame, or of the body part it hangs from when it is far from the
+// body (smoothed over the template, so that cloth spanning two limbs blends them instead of
+// tearing), and is then carried to any
 // other frame by the blend of its joints' motions between the two fitted poses. The body of each
 // frame is fitted on its own, so the template posed this way does not drift along a sequence as
 // a chain of neighbour-to-neighbour fits does.
@@ -29,11 +30,22 @@ PosedSkeleton posedSkeleton(const BodyModel& model, const Eigen::VectorXd& beta,
 std::vector<Eigen::Matrix<double, 3, 4>> jointMotions(const PosedSkeleton& from,
                                                       const PosedSkeleton& to);
 
+/// Changes whenever the skinned template changes for the same inputs, so that fits made from an
+/// older one are not resumed beside new ones (2: cloth hanging away from the body binds by part).
+inline constexpr int kSkinnedTemplateRevision = 2;
+
 struct SkinnedTemplateOptions
 {
   /// Smoothing rounds of the weights over the template's edges (each averages a vertex's
   /// weights with its neighbours').
   int smoothingRounds = 10;
+  /// A template vertex takes the weights of the nearest body vertex, unless it lies further than
+  /// this (metres) from the body at the template frame: cloth hanging away from the body, a
+  /// skirt's hem between the legs. It then takes those of the body part whose bone (the main axis
+  /// of the body vertices its joint moves most) is nearest relative to the part's thickness: the
+  /// pelvis, rather than whichever leg is nearer (BENCHMARKS.md, "hanging cloth"). Infinity: the
+  /// nearest body vertex always.
+  double partBindingDistance = 0.08;
 };
 
 class SkinnedTemplate
