@@ -2,8 +2,8 @@
 // The template bound to the fitted body: every template vertex takes the skinning weights of the
 // body near it at the template frame, or of the body part it hangs from when it is far from the
 // body (smoothed over the template, so that cloth spanning two limbs blends them instead of
-// tearing), and is then carried to any
-// other frame by the blend of its joints' motions between the two fitted poses. The body of each
+// tearing), and is then carried to any other frame by the blend of its joints' motions between
+// the two fitted poses. The body of each
 // frame is fitted on its own, so the template posed this way does not drift along a sequence as
 // a chain of neighbour-to-neighbour fits does.
 //
