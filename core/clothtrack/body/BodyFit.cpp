@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -319,17 +320,65 @@ void flagIfUnexplained(double limit, BodyFrameFit& fit)
 
 /// Poor fits started again from the poses of the sequence's ok fits (at most 24, spread over
 /// it): a fit that went wrong where its neighbours did not, or a pose that a collection repeats.
+/// Of the frames `own` only.
 void recoverPoorFits(SequenceFitter& fitter, FrameSurfaces& surfaces,
-                     const std::vector<int>& usable, double limit, std::vector<BodyFrameFit>& fits)
+                     const std::vector<int>& usable, const std::vector<int>& own, double limit,
+                     std::vector<BodyFrameFit>& fits)
 {
   const std::vector<BodyPose> poses = okPoses(usable, -1, fits);
-  for (int i : usable)
+  for (int i : own)
   {
     if (fits[i].status != BodyFitStatus::Poor) continue;
     fitter.refitFromPoses(surfaces.get(i), poses, fits[i]);
     flagIfUnexplained(limit, fits[i]);
     surfaces.release(i);
   }
+}
+
+/// A process's share of the usable frames (BodyFitSharing): the frames it owns, and those its
+/// forward and backward passes track through to reach them.
+struct Segment
+{
+  std::vector<int> own;
+  std::vector<int> forward;  ///< `overlap` frames before its own, then its own
+  std::vector<int> backward; ///< its own, then `overlap` frames after them
+};
+
+Segment segmentOf(const std::vector<int>& usable, const BodyFitSharing& sharing)
+{
+  const int m = static_cast<int>(usable.size());
+  if (!sharing.splits(m)) return {usable, usable, usable};
+  const int begin = static_cast<int>(static_cast<long long>(m) * sharing.part / sharing.parts);
+  const int end = static_cast<int>(static_cast<long long>(m) * (sharing.part + 1) / sharing.parts);
+  const int overlap = std::max(1, sharing.overlap);
+  auto frames = [&](int from, int to) {
+    return std::vector<int>(usable.begin() + std::max(0, from), usable.begin() + std::min(m, to));
+  };
+  return {frames(begin, end), frames(begin - overlap, end), frames(begin, end + overlap)};
+}
+
+/// Every process's fits of its own frames, brought to every process.
+void shareFits(const BodyFitSharing& sharing, const std::vector<int>& own,
+               std::vector<BodyFrameFit>& fits)
+{
+  for (const std::string& bytes : sharing.allGather(encodeFrameFits(fits, own)))
+    decodeFrameFits(bytes, fits);
+}
+
+/// The first process's shape, on every process: each estimated it from the same fits, and the
+/// poses of all must be fitted under one shape whatever the arithmetic of their machines.
+void shareShape(const BodyFitSharing& sharing, SequenceFitter& fitter)
+{
+  const Eigen::VectorXd& beta = fitter.samples().beta();
+  std::string own;
+  if (sharing.part == 0)
+    own.assign(reinterpret_cast<const char*>(beta.data()), beta.size() * sizeof(double));
+  const std::string first = sharing.allGather(own).at(0);
+  if (first.size() != beta.size() * sizeof(double))
+    throw Error("shared body fit: the processes' shapes differ in size");
+  Eigen::VectorXd shared(beta.size());
+  std::memcpy(shared.data(), first.data(), first.size());
+  fitter.samples().setShape(shared);
 }
 } // namespace
 
@@ -349,21 +398,35 @@ BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
   BodyFitResult result;
   result.frames.resize(n);
   const std::vector<int> usable = usableFrames(frames, result.frames);
-  FitProgress fitProgress(progress,
-                          3.0 * n + options.shapeRounds * std::max(1, options.shapeFrames));
+  // Shared among processes, each tracks its own segment; the fits are exchanged after each pass.
+  const BodyFitSharing& sharing = options.sharing;
+  const bool shared = sharing.splits(static_cast<int>(usable.size()));
+  if (shared && !sharing.allGather) throw Error("body fit: shared, but with no exchange");
+  const Segment segment = segmentOf(usable, sharing);
+  auto share = [&]
+  {
+    if (shared) shareFits(sharing, segment.own, result.frames);
+  };
+  FitProgress fitProgress(progress, 2.0 * segment.forward.size() + segment.backward.size() +
+                                        options.shapeRounds * std::max(1, options.shapeFrames));
   FrameSurfaces surfaces(frames, options.extremityPersistence);
   SequenceFitter fitter(model, options);
 
   fitter.setReachTolerance(options.shapeReachTolerance);
-  firstPass(fitter, surfaces, usable, options, result.frames, fitProgress);
+  firstPass(fitter, surfaces, segment.forward, options, result.frames, fitProgress);
+  share();
   fitShape(fitter, surfaces, usable, options, result.frames, fitProgress);
+  if (shared) shareShape(sharing, fitter);
   result.beta = fitter.samples().beta();
   fitter.setReachTolerance(options.reachTolerance);
-  finalPass(fitter, surfaces, usable, options, result.frames, fitProgress);
-  backwardPass(fitter, surfaces, usable, options, result.frames, fitProgress);
+  finalPass(fitter, surfaces, segment.forward, options, result.frames, fitProgress);
+  share();
+  backwardPass(fitter, surfaces, segment.backward, options, result.frames, fitProgress);
+  share();
   const double limit = unexplainedLimit(options, result.frames);
   for (BodyFrameFit& fit : result.frames) flagIfUnexplained(limit, fit);
-  recoverPoorFits(fitter, surfaces, usable, limit, result.frames);
+  recoverPoorFits(fitter, surfaces, usable, segment.own, limit, result.frames);
+  share();
 
   // Frames that could not be fitted take their nearest fitted neighbour's pose.
   for (int i = 0; i < n; ++i)

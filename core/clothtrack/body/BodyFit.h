@@ -30,6 +30,12 @@
 // final shape. Last, a fit that leaves much more of its frame unexplained than the sequence's
 // others is poor (a limb fitted in the wrong place), and every poor fit is started again from the
 // poses of the sequence's ok fits.
+//
+// Shared among processes (BodyFitOptions::sharing), each process tracks its own segment of the
+// sequence, starting BodyFitSharing::overlap frames before it (the first from all headings, as
+// the sequence's first frame) and, backwards, as many after it; the fits are exchanged after each
+// pass, and the shape is estimated by every process from the same key frames, the first's kept.
+#include "BodyFitSharing.h"
 #include "BodyModel.h"
 
 #include <clothtrack/base/Progress.h>
@@ -111,6 +117,8 @@ struct BodyFitOptions
   /// moves the predecessor's pose by it before fitting a frame, so that a turn or a step already
   /// made is not left to the fit to find. Empty: the predecessor's pose as it is.
   FrameMotion frameMotion;
+  /// The processes this fit is shared with; by default none.
+  BodyFitSharing sharing;
 };
 
 /// Changes whenever the fit's results change for the same options, so that results cached by an
