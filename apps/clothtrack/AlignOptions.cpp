@@ -78,6 +78,11 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "register-frames", po::bool_switch(&s.registerFrames),
       "body fit: start each frame from its predecessor's pose moved by the rigid motion between "
       "the two surfaces (generalized ICP)")(
+      "split-body-fit", po::bool_switch(&s.splitBodyFit),
+      "under mpirun: each process fits the body to its own segment of the sequence (faster; the "
+      "result differs a little from one process's, which is otherwise kept bit for bit)")(
+      "body-fit-overlap", po::value(&s.bodyFitOverlap)->default_value(s.bodyFitOverlap),
+      "with --split-body-fit: frames of the neighbouring segments each process tracks first")(
       "no-retry", po::bool_switch(),
       "keep a frame's first fit even when it is clearly doubtful (by default such a frame is "
       "fitted again from other starts and the most confident fit kept)")(
@@ -151,6 +156,7 @@ void check(const AlignSettings& s)
   const TemplateFitOptions& fit = s.fit;
   const PatchCorrespondenceOptions& patches = s.patches;
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
+  if (s.bodyFitOverlap < 1) throw UsageError{"--body-fit-overlap must be 1 or more"};
   if (s.chains < 0 || s.chains == 1) throw UsageError{"--chains must be 2 or more"};
   if (!(s.frameMemoryMB >= 0)) throw UsageError{"--frame-memory must be 0 or more (MB)"};
   if (s.factorBackend != "block" && s.factorBackend != "cholmod")

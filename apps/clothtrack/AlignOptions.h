@@ -54,6 +54,11 @@ struct AlignSettings
   /// Body fit: each frame starts from its predecessor's pose moved by the rigid motion between
   /// the two surfaces (BodyStageOptions::registerFrames).
   bool registerFrames = false;
+  /// Under mpirun, each process fits the body to a segment of the sequence, tracking
+  /// bodyFitOverlap frames of its neighbours' segments first (BodyFitSharing). Off: the first
+  /// process fits the whole sequence, and the result is one process's bit for bit.
+  bool splitBodyFit = false;
+  int bodyFitOverlap = 8;
   bool skipBadFrames = false;
   bool noReport = false;
   /// Megabytes of frames (input and ground truth each) kept in memory between their uses; past

@@ -153,8 +153,20 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
             o.registration.maximumIterations, o.minimumRegistrationOverlap}}};
 }
 
-/// Stage 1, or its result from the work folder.
-void runBodyStage(Run& run)
+/// Under mpirun, each process's segment of the body fit (--split-body-fit).
+BodyFitSharing bodyFitSharing(const AlignSettings& s)
+{
+  BodyFitSharing sharing;
+  if (ranks::count() == 1 || !s.splitBodyFit) return sharing;
+  sharing.part = ranks::rank();
+  sharing.parts = ranks::count();
+  sharing.overlap = s.bodyFitOverlap;
+  sharing.allGather = ranks::gatherBytes;
+  return sharing;
+}
+
+/// Stage 1, or its result from the work folder. `together`: every process fits its segment.
+void runBodyStage(Run& run, bool together)
 {
   const AlignSettings& s = run.settings;
   const int n = run.input.count();
@@ -165,6 +177,13 @@ void runBodyStage(Run& run)
   run.landmarkKey = {{"files", run.input.files},  {"model", s.modelPath},
                      {"up", s.sequence.up},       {"unit", s.sequence.unit},
                      {"scale", s.sequence.scale}, {"body_fit", bodyStageKey(options)}};
+  if (together)
+  {
+    // Segments tracked apart are fitted a little differently from one whole track.
+    options.fit.sharing = bodyFitSharing(s);
+    const BodyFitSharing& sharing = options.fit.sharing;
+    run.landmarkKey["shared"] = {sharing.parts, sharing.overlap, sharing.minimumSegment};
+  }
   run.body = {};
   run.landmarks = StoredLandmarks(n);
   if (!s.needLandmarks())
@@ -173,8 +192,9 @@ void runBodyStage(Run& run)
                          "template not chosen by pose)\n");
     return;
   }
-  if (auto cached = readBodyStage(cache.string(), run.landmarkKey);
-      cached && static_cast<int>(cached->lineOffsets.size()) == n &&
+  auto cached = readBodyStage(cache.string(), run.landmarkKey);
+  if (together) ranks::barrier(); // every process has looked before the first writes
+  if (cached && static_cast<int>(cached->lineOffsets.size()) == n &&
       static_cast<int>(cached->body.frames.size()) == n)
   {
     run.body = std::move(*cached);
@@ -729,9 +749,10 @@ template <class Stage> void timed(Run& run, const char* name, const Stage& stage
   run.stagePeakMemory[name] = peakMemoryMB(); // where the peak was reached
 }
 
-/// Reading and stage 1. With several processes the leader goes first: it reconstructs point
-/// clouds, clears what an interrupted run left and keeps the body fit in the work folder; the
-/// others then read their frames and take the body fit from there.
+/// Reading and stage 1. With several processes the leader reads first: it reconstructs point
+/// clouds and clears what an interrupted run left. A sequence long enough to share is then
+/// fitted by every process, each its segment; a shorter one by the leader alone, which keeps the
+/// body fit in the work folder before the others read their frames and take it from there.
 void readAndFitBodies(Run& run)
 {
   const bool leader = ranks::leader();
@@ -742,8 +763,10 @@ void readAndFitBodies(Run& run)
   fs::create_directories(run.work);
   fs::create_directories(run.out);
   if (leader) removeLeftoverParts({run.out, run.work});
-  timed(run, "body_fit", [&] { runBodyStage(run); });
-  if (leader) ranks::barrier();
+  const bool together = bodyFitSharing(run.settings).splits(run.input.count());
+  if (together && leader) ranks::barrier();
+  timed(run, "body_fit", [&] { runBodyStage(run, together); });
+  if (!together && leader) ranks::barrier();
 }
 
 /// The stages' seconds of every process, in metrics.json when several shared the run.

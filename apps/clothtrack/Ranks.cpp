@@ -1,5 +1,6 @@
 #include "Ranks.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 #ifdef CLOTHTRACK_WITH_MPI
@@ -82,6 +83,25 @@ std::vector<double> gather(const std::vector<double>& values)
   controller()->AllGather(values.data(), all.data(), static_cast<vtkIdType>(values.size()));
   return all;
 }
+
+std::vector<std::string> gatherBytes(const std::string& bytes)
+{
+  if (count() == 1) return {bytes};
+  const vtkIdType length = static_cast<vtkIdType>(bytes.size());
+  std::vector<vtkIdType> lengths(count()), offsets(count());
+  controller()->AllGather(&length, lengths.data(), 1);
+  vtkIdType total = 0;
+  for (int r = 0; r < count(); ++r)
+  {
+    offsets[r] = total;
+    total += lengths[r];
+  }
+  std::vector<char> all(std::max<vtkIdType>(total, 1));
+  controller()->AllGatherV(bytes.data(), all.data(), length, lengths.data(), offsets.data());
+  std::vector<std::string> out;
+  for (int r = 0; r < count(); ++r) out.emplace_back(all.data() + offsets[r], lengths[r]);
+  return out;
+}
 #else
 void start(int*, char***) {}
 void stop() {}
@@ -102,6 +122,10 @@ void sum(std::vector<double>&) {}
 std::vector<double> gather(const std::vector<double>& values)
 {
   return values;
+}
+std::vector<std::string> gatherBytes(const std::string& bytes)
+{
+  return {bytes};
 }
 #endif
 

@@ -2,6 +2,7 @@
 // The processes of one run started by mpirun, through VTK's MPI controller (vtkMPIController):
 // they share the work folder and split the per-frame work. A process started otherwise, or a
 // build without MPI, is the only one.
+#include <string>
 #include <vector>
 
 namespace clothtrack::app
@@ -23,5 +24,7 @@ void barrier();
 void sum(std::vector<double>& values);
 /// Each process's `values` (the same length on all), process 0's first, on every process.
 std::vector<double> gather(const std::vector<double>& values);
+/// Each process's bytes (any length), process 0's first, on every process.
+std::vector<std::string> gatherBytes(const std::string& bytes);
 } // namespace ranks
 } // namespace clothtrack::app
