@@ -2,10 +2,10 @@
 
 #include "BodyFit.h"
 
+#include <clothtrack/base/Bytes.h>
 #include <clothtrack/base/Error.h>
 
 #include <cstdint>
-#include <cstring>
 
 namespace clothtrack
 {
@@ -14,57 +14,7 @@ namespace
 /// Bumped with any change of the layout below.
 constexpr std::uint32_t kLayout = 0x43544231; // "CTB1"
 
-class Writer
-{
-public:
-  template <class T> void put(const T& value)
-  {
-    const char* p = reinterpret_cast<const char*>(&value);
-    bytes_.append(p, sizeof(T));
-  }
-  void putText(const std::string& text)
-  {
-    put(static_cast<std::uint32_t>(text.size()));
-    bytes_ += text;
-  }
-  std::string take() { return std::move(bytes_); }
-
-private:
-  std::string bytes_;
-};
-
-class Reader
-{
-public:
-  explicit Reader(const std::string& bytes) : bytes_(bytes) {}
-  template <class T> T get()
-  {
-    need(sizeof(T));
-    T value;
-    std::memcpy(&value, bytes_.data() + at_, sizeof(T));
-    at_ += sizeof(T);
-    return value;
-  }
-  std::string getText()
-  {
-    const auto size = get<std::uint32_t>();
-    need(size);
-    std::string text = bytes_.substr(at_, size);
-    at_ += size;
-    return text;
-  }
-  bool done() const { return at_ == bytes_.size(); }
-
-private:
-  void need(size_t size) const
-  {
-    if (bytes_.size() - at_ < size) throw Error("shared body fit: truncated message");
-  }
-  const std::string& bytes_;
-  size_t at_ = 0;
-};
-
-void putFit(Writer& w, const BodyFrameFit& f)
+void putFit(ByteWriter& w, const BodyFrameFit& f)
 {
   for (int j = 0; j < NumJoints; ++j)
     for (int c = 0; c < 3; ++c) w.put(f.pose.rotations(j, c));
@@ -81,7 +31,7 @@ void putFit(Writer& w, const BodyFrameFit& f)
     for (int c = 0; c < 3; ++c) w.put(e[c]);
 }
 
-BodyFrameFit getFit(Reader& r)
+BodyFrameFit getFit(ByteReader& r)
 {
   BodyFrameFit f;
   for (int j = 0; j < NumJoints; ++j)
@@ -104,7 +54,7 @@ BodyFrameFit getFit(Reader& r)
 
 std::string encodeFrameFits(const std::vector<BodyFrameFit>& fits, const std::vector<int>& frames)
 {
-  Writer w;
+  ByteWriter w;
   w.put(kLayout);
   w.put(static_cast<std::uint32_t>(frames.size()));
   for (int i : frames)
@@ -117,7 +67,7 @@ std::string encodeFrameFits(const std::vector<BodyFrameFit>& fits, const std::ve
 
 void decodeFrameFits(const std::string& bytes, std::vector<BodyFrameFit>& fits)
 {
-  Reader r(bytes);
+  ByteReader r(bytes, "shared body fit");
   if (r.get<std::uint32_t>() != kLayout) throw Error("shared body fit: message of another layout");
   const auto count = r.get<std::uint32_t>();
   for (std::uint32_t k = 0; k < count; ++k)
@@ -127,6 +77,6 @@ void decodeFrameFits(const std::string& bytes, std::vector<BodyFrameFit>& fits)
       throw Error("shared body fit: frame " + std::to_string(i) + " out of range");
     fits[i] = getFit(r);
   }
-  if (!r.done()) throw Error("shared body fit: trailing bytes");
+  r.expectEnd();
 }
 } // namespace clothtrack
