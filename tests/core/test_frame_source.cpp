@@ -186,3 +186,45 @@ TEST(FrameSource, StreamedQualityEqualsQualityInMemory)
   EXPECT_EQ(q.doubtfulFrames, inMemory.doubtfulFrames);
   EXPECT_GT(q.meanJitter, 0.0);
 }
+
+TEST(FrameSource, QualityMeasuredInPartsEqualsTheWhole)
+{
+  // Three processes measure a part each; one joins them. Frame 20 is pulled off its frame, so
+  // that a doubt travels too.
+  const int n = 37, parts = 3;
+  const TriangleMesh sphere = icosphere(2, 0.2);
+  std::vector<Points> aligned;
+  for (int k = 0; k < n; ++k)
+    aligned.push_back(shiftedSphere(k).V * (k == 20 ? 1.6 : 1.0 + 0.01 * std::sin(k)));
+  const CachedFrames frames(n, shiftedSphere, meshBytes(sphere));
+  const AlignedAccess access = [&](int k) { return aligned[k]; };
+  const SequenceQuality whole = sequenceQuality(access, sphere.F, frames, {}, 4);
+  std::vector<std::string> bytes;
+  for (int part = 0; part < parts; ++part)
+  {
+    const auto [from, to] = framesOfPart(n, part, parts);
+    const SequenceQuality q =
+        sequenceQualityOfFrames(access, sphere.F, frames, {}, 4, {}, {}, from, to);
+    bytes.push_back(encodeSequenceQuality(q, from, to));
+  }
+  const SequenceQuality joined = joinSequenceQuality(bytes, n);
+  EXPECT_EQ(joined.surfaceDistance, whole.surfaceDistance);
+  EXPECT_EQ(joined.coverageDistance, whole.coverageDistance);
+  EXPECT_EQ(joined.jitter, whole.jitter);
+  EXPECT_EQ(joined.meanSurfaceDistance, whole.meanSurfaceDistance);
+  EXPECT_EQ(joined.meanCoverageDistance, whole.meanCoverageDistance);
+  EXPECT_EQ(joined.meanJitter, whole.meanJitter);
+  ASSERT_EQ(whole.doubtfulFrames, std::vector<int>{20});
+  EXPECT_EQ(joined.doubtfulFrames, whole.doubtfulFrames);
+  ASSERT_EQ(joined.confidence.size(), whole.confidence.size());
+  for (int k = 0; k < n; ++k)
+  {
+    EXPECT_EQ(joined.confidence[k].severity, whole.confidence[k].severity) << k;
+    EXPECT_EQ(joined.confidence[k].stretch, whole.confidence[k].stretch) << k;
+    EXPECT_EQ(joined.confidence[k].doubt, whole.confidence[k].doubt) << k;
+  }
+  // Parts out of order, or a part missing, are an error rather than a wrong sequence.
+  EXPECT_THROW(joinSequenceQuality({bytes[1], bytes[0], bytes[2]}, n), Error);
+  EXPECT_THROW(joinSequenceQuality({bytes[0], bytes[1]}, n), Error);
+  EXPECT_THROW(joinSequenceQuality({bytes[0].substr(0, 20), bytes[1], bytes[2]}, n), Error);
+}

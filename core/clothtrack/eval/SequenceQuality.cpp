@@ -1,15 +1,20 @@
 #include "SequenceQuality.h"
 
+#include <clothtrack/base/Bytes.h>
 #include <clothtrack/base/Error.h>
 #include <clothtrack/base/Parallel.h>
 #include <clothtrack/mesh/SurfaceLocator.h>
 
+#include <cstdint>
 #include <optional>
 
 namespace clothtrack
 {
 namespace
 {
+/// Bumped with any change of the layout of encodeSequenceQuality.
+constexpr std::uint32_t kQualityLayout = 0x43545131; // "CTQ1"
+
 double mean(const std::vector<double>& values)
 {
   double sum = 0;
@@ -38,6 +43,19 @@ SequenceQuality sequenceQuality(const AlignedAccess& aligned, const Triangles& t
                                 const FrameConfidenceOptions& options,
                                 const TemplatePosedByBody& posedByBody)
 {
+  SequenceQuality q =
+      sequenceQualityOfFrames(aligned, templateFaces, frames, knownSurfaceDistance, templateFrame,
+                              options, posedByBody, 0, frames.count());
+  summarise(q);
+  return q;
+}
+
+SequenceQuality sequenceQualityOfFrames(const AlignedAccess& aligned,
+                                        const Triangles& templateFaces, const FrameSource& frames,
+                                        const std::vector<double>& knownSurfaceDistance,
+                                        int templateFrame, const FrameConfidenceOptions& options,
+                                        const TemplatePosedByBody& posedByBody, int from, int to)
+{
   const int n = frames.count();
   SequenceQuality q;
   q.surfaceDistance.assign(n, 0.0);
@@ -45,6 +63,9 @@ SequenceQuality sequenceQuality(const AlignedAccess& aligned, const Triangles& t
   if (templateFrame >= n)
     throw Error("Sequence quality: template frame " + std::to_string(templateFrame) + " of " +
                 std::to_string(n) + " frames.");
+  if (from < 0 || to > n || from > to)
+    throw Error("Sequence quality: frames " + std::to_string(from) + " to " + std::to_string(to) +
+                " of " + std::to_string(n) + ".");
   const bool judge = templateFrame >= 0;
   if (judge) q.confidence.resize(n);
   std::optional<ConfidenceMeter> meter;
@@ -71,9 +92,9 @@ SequenceQuality sequenceQuality(const AlignedAccess& aligned, const Triangles& t
   };
   // Blocks of frames, each with the aligned frames on either side for the jitter.
   const int block = std::max(8, 4 * threadCount());
-  for (int begin = 0; begin < n; begin += block)
+  for (int begin = from; begin < to; begin += block)
   {
-    const int end = std::min(n, begin + block);
+    const int end = std::min(to, begin + block);
     const int first = std::max(0, begin - 1), last = std::min(n - 1, end);
     std::vector<Points> window(last - first + 1);
     parallelFor(
@@ -88,11 +109,82 @@ SequenceQuality sequenceQuality(const AlignedAccess& aligned, const Triangles& t
       q.jitter.push_back((after - 2 * now + before).rowwise().norm().mean());
     }
   }
+  return q;
+}
+
+void summarise(SequenceQuality& q)
+{
+  q.doubtfulFrames.clear();
   for (int k = 0; k < static_cast<int>(q.confidence.size()); ++k)
     if (q.confidence[k].doubtful()) q.doubtfulFrames.push_back(k);
   q.meanSurfaceDistance = mean(q.surfaceDistance);
   q.meanCoverageDistance = mean(q.coverageDistance);
   q.meanJitter = mean(q.jitter);
+}
+
+std::pair<int, int> framesOfPart(int frames, int part, int parts)
+{
+  auto at = [&](int p) { return static_cast<int>(static_cast<long long>(frames) * p / parts); };
+  return {at(part), at(part + 1)};
+}
+
+std::string encodeSequenceQuality(const SequenceQuality& q, int from, int to)
+{
+  ByteWriter w;
+  w.put(kQualityLayout);
+  w.put(static_cast<std::int32_t>(from));
+  w.put(static_cast<std::int32_t>(to));
+  w.put(static_cast<std::uint8_t>(!q.confidence.empty()));
+  for (int k = from; k < to; ++k)
+  {
+    w.put(q.surfaceDistance.at(k));
+    w.put(q.coverageDistance.at(k));
+    if (q.confidence.empty()) continue;
+    const FrameConfidence& c = q.confidence[k];
+    for (double v : {c.surfaceDistance, c.coverageDistance, c.stretch, c.folded, c.bodyDistance,
+                     c.severity, c.confidence})
+      w.put(v);
+    w.putText(c.doubt);
+  }
+  w.put(static_cast<std::uint32_t>(q.jitter.size()));
+  for (double v : q.jitter) w.put(v);
+  return w.take();
+}
+
+SequenceQuality joinSequenceQuality(const std::vector<std::string>& parts, int frames)
+{
+  SequenceQuality q;
+  q.surfaceDistance.assign(frames, 0.0);
+  q.coverageDistance.assign(frames, 0.0);
+  int next = 0; // the parts follow one another
+  for (const std::string& bytes : parts)
+  {
+    ByteReader r(bytes, "sequence quality");
+    if (r.get<std::uint32_t>() != kQualityLayout)
+      throw Error("sequence quality: message of another layout");
+    const int from = r.get<std::int32_t>(), to = r.get<std::int32_t>();
+    if (from != next || to < from || to > frames)
+      throw Error("sequence quality: parts do not follow one another");
+    next = to;
+    const bool judged = r.get<std::uint8_t>() != 0;
+    if (judged) q.confidence.resize(frames);
+    for (int k = from; k < to; ++k)
+    {
+      q.surfaceDistance[k] = r.get<double>();
+      q.coverageDistance[k] = r.get<double>();
+      if (!judged) continue;
+      FrameConfidence& c = q.confidence[k];
+      for (double* v : {&c.surfaceDistance, &c.coverageDistance, &c.stretch, &c.folded,
+                        &c.bodyDistance, &c.severity, &c.confidence})
+        *v = r.get<double>();
+      c.doubt = r.getText();
+    }
+    const auto jitter = r.get<std::uint32_t>();
+    for (std::uint32_t i = 0; i < jitter; ++i) q.jitter.push_back(r.get<double>());
+    r.expectEnd();
+  }
+  if (next != frames) throw Error("sequence quality: parts do not cover the sequence");
+  summarise(q);
   return q;
 }
 } // namespace clothtrack

@@ -8,7 +8,8 @@
 #include <clothtrack/mesh/TriangleMesh.h>
 
 #include <functional>
-
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace clothtrack
@@ -48,4 +49,26 @@ SequenceQuality sequenceQuality(const AlignedAccess& aligned, const Triangles& t
                                 const std::vector<double>& knownSurfaceDistance = {},
                                 int templateFrame = -1, const FrameConfidenceOptions& options = {},
                                 const TemplatePosedByBody& posedByBody = {});
+
+// Processes sharing a run each measure their part of the sequence (framesOfPart), send it as
+// bytes (encodeSequenceQuality), and one joins the parts (joinSequenceQuality): the result is
+// sequenceQuality's, bit for bit.
+
+/// Frames [from, to) measured as sequenceQuality measures them, with the jitter of the inner
+/// frames among them; the other frames' measures are left at zero (and their confidence at its
+/// default), and the means and doubtful frames are not set (summarise).
+SequenceQuality sequenceQualityOfFrames(const AlignedAccess& aligned,
+                                        const Triangles& templateFaces, const FrameSource& frames,
+                                        const std::vector<double>& knownSurfaceDistance,
+                                        int templateFrame, const FrameConfidenceOptions& options,
+                                        const TemplatePosedByBody& posedByBody, int from, int to);
+/// The means and the doubtful frames of a measured sequence.
+void summarise(SequenceQuality& quality);
+/// Frames [first, second) of the `part`-th of `parts` contiguous parts of `frames` frames.
+std::pair<int, int> framesOfPart(int frames, int part, int parts);
+/// The measures of frames [from, to) as bytes.
+std::string encodeSequenceQuality(const SequenceQuality& quality, int from, int to);
+/// The whole sequence's quality from its parts' bytes, in frame order. Throws Error when they do
+/// not follow one another over the `frames` frames.
+SequenceQuality joinSequenceQuality(const std::vector<std::string>& parts, int frames);
 } // namespace clothtrack
