@@ -206,6 +206,13 @@ std::pair<int, int> frameRange(const std::string& spec, int count)
   return {begin, end};
 }
 
+bool inputHasPointClouds(const AlignSettings& s)
+{
+  const std::vector<std::string> files = listFrames(s.input);
+  const auto [begin, end] = frameRange(s.frameSpec, static_cast<int>(files.size()));
+  return std::any_of(files.begin() + begin, files.begin() + end, isPointCloudFile);
+}
+
 Input readInput(const AlignSettings& s, const fs::path& work)
 {
   FrameConventions conventions = toConventions(s.sequence);

@@ -36,6 +36,10 @@ struct Input
 /// "A:B" (either end may be empty) -> [begin, end) of `count` frames. Throws UsageError.
 std::pair<int, int> frameRange(const std::string& spec, int count);
 
+/// Whether the frames of the run are point clouds: reconstructed into OUT/reconstructed by the
+/// first process to read them, which the others then wait for.
+bool inputHasPointClouds(const AlignSettings& s);
+
 /// Lists, reads and checks the frames (and ground truth and markers) of a run; `work` receives
 /// the cleaned frames that do not fit in memory. Prints progress and warnings; throws UsageError
 /// or Error naming the file.

@@ -116,9 +116,14 @@ void removeLeftoverParts(const std::vector<fs::path>& folders)
     std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(folder, ec);
          !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-      if (it->is_regular_file(ec) && it->path().extension() == ".part" &&
-          fs::remove(it->path(), ec))
+    {
+      // Another process's frame copies, which it may be writing now: it clears its own.
+      if (it->is_directory(ec) && it->path().filename().string().rfind("rank_", 0) == 0)
+        it.disable_recursion_pending();
+      else if (it->is_regular_file(ec) && it->path().extension() == ".part" &&
+               fs::remove(it->path(), ec))
         ++removed;
+    }
   }
   if (removed > 0)
     std::fprintf(stderr, "removed %d partial files left by an interrupted run\n", removed);
@@ -628,8 +633,41 @@ Points alignedPositions(const Run& run, const AlignedOutput& output, int k)
   return std::move(fit->positions);
 }
 
+/// Frame k's surface distance as its fit measured it: from this process's fit, or from the
+/// aligned frame another process wrote; -1 when neither has it.
+double fittedSurfaceDistance(const Run& run, const AlignedOutput& output, int k)
+{
+  const FrameFit& f = run.fits[k];
+  if (f.meanSurfaceDistance >= 0) return f.meanSurfaceDistance;
+  if (f.surfaceDistance.size() > 0) return f.surfaceDistance.mean();
+  const std::optional<FrameFit> written = output.earlier(run.input.frameNumber[k]);
+  return written && written->surfaceDistance.size() > 0 ? written->surfaceDistance.mean() : -1.0;
+}
+
+/// How well the aligned frames follow the input without a ground truth. With several processes
+/// each measures its part of the sequence and the leader joins the parts, as one process would
+/// have measured them; the others get nothing.
+SequenceQuality measureQuality(const Run& run, const AlignedOutput& output)
+{
+  const int n = run.input.count();
+  const auto [from, to] = framesOfPart(n, ranks::rank(), ranks::count());
+  std::vector<double> known(n, -1.0);
+  for (int k = from; k < to; ++k) known[k] = fittedSurfaceDistance(run, output, k);
+  SequenceQuality part =
+      sequenceQualityOfFrames([&](int k) { return alignedPositions(run, output, k); },
+                              run.templateMesh().F, *run.input.frames, known, run.templateFrame,
+                              FitJudgeOptions().limits, run.posedByBody, from, to);
+  if (ranks::count() == 1)
+  {
+    summarise(part);
+    return part;
+  }
+  const std::vector<std::string> parts = ranks::gatherBytes(encodeSequenceQuality(part, from, to));
+  return ranks::leader() ? joinSequenceQuality(parts, n) : SequenceQuality();
+}
+
 /// metrics.json: inputs, template, errors (with a ground truth), quality without one, timings.
-nlohmann::json evaluate(const Run& run, const AlignedOutput& output)
+nlohmann::json evaluate(const Run& run, const AlignedOutput& output, const SequenceQuality& quality)
 {
   const AlignSettings& s = run.settings;
   const Input& in = run.input;
@@ -676,9 +714,6 @@ nlohmann::json evaluate(const Run& run, const AlignedOutput& output)
     addMarkerMetrics(metrics, positions, *in.markers, j, s.markersPath);
   }
   // Without ground truth too: how well the result covers each frame, and how smoothly it moves.
-  const SequenceQuality quality = fittedSequenceQuality(
-      run.fits, run.templateMesh().F, *in.frames,
-      [&](int k) { return alignedPositions(run, output, k); }, j, {}, run.posedByBody);
   metrics["per_frame_surface_distance_m"] = quality.surfaceDistance;
   metrics["per_frame_coverage_distance_m"] = quality.coverageDistance;
   metrics["mean_surface_distance_m"] = quality.meanSurfaceDistance;
@@ -749,21 +784,25 @@ template <class Stage> void timed(Run& run, const char* name, const Stage& stage
   run.stagePeakMemory[name] = peakMemoryMB(); // where the peak was reached
 }
 
-/// Reading and stage 1. With several processes the leader reads first: it reconstructs point
-/// clouds and clears what an interrupted run left. A sequence long enough to share is then
-/// fitted by every process, each its segment; a shorter one by the leader alone, which keeps the
-/// body fit in the work folder before the others read their frames and take it from there.
+/// Reading and stage 1. With several processes every process reads the frames at once, but
+/// point clouds are first reconstructed by the leader alone. A sequence long enough to share is
+/// then fitted by every process, each its segment; a shorter one by the leader alone, which keeps
+/// the body fit in the work folder for the others to take from there.
 void readAndFitBodies(Run& run)
 {
   const bool leader = ranks::leader();
-  if (!leader) ranks::barrier();
-  // Each process keeps its own copies of frames that do not fit in memory.
+  const bool leaderReadsFirst = ranks::count() > 1 && inputHasPointClouds(run.settings);
+  if (!leader && leaderReadsFirst) ranks::barrier();
+  // Each process keeps its own copies of frames that do not fit in memory, and clears what an
+  // interrupted run left among them; the leader clears the rest.
   const fs::path copies = leader ? run.work : run.work / ("rank_" + std::to_string(ranks::rank()));
+  if (!leader) removeLeftoverParts({copies});
   timed(run, "read", [&] { run.input = readInput(run.settings, copies); });
   fs::create_directories(run.work);
   fs::create_directories(run.out);
   if (leader) removeLeftoverParts({run.out, run.work});
   const bool together = bodyFitSharing(run.settings).splits(run.input.count());
+  if (!leader && !leaderReadsFirst) ranks::barrier();
   if (together && leader) ranks::barrier();
   timed(run, "body_fit", [&] { runBodyStage(run, together); });
   if (!together && leader) ranks::barrier();
@@ -772,7 +811,7 @@ void readAndFitBodies(Run& run)
 /// The stages' seconds of every process, in metrics.json when several shared the run.
 void addRankTimings(nlohmann::json& metrics, const Run& run)
 {
-  const char* stages[] = {"read", "body_fit", "select_template", "correspond", "fit"};
+  const char* stages[] = {"read", "body_fit", "select_template", "correspond", "fit", "evaluate"};
   std::vector<double> own;
   for (const char* stage : stages) own.push_back(run.stageSeconds.value(stage, 0.0));
   const std::vector<double> all = ranks::gather(own);
@@ -819,13 +858,18 @@ int alignCommand(const Args& args, AlignMode mode)
   }
   timed(run, "fit", [&] { runFitStage(run, output); });
   nlohmann::json metrics;
+  timed(run, "evaluate",
+        [&]
+        {
+          const SequenceQuality quality = measureQuality(run, output);
+          if (ranks::leader()) metrics.update(evaluate(run, output, quality));
+        });
   addRankTimings(metrics, run);
   if (!ranks::leader())
   {
     removeFrameCopies(run);
     return 0;
   }
-  timed(run, "evaluate", [&] { metrics.update(evaluate(run, output)); });
   removeFrameCopies(run);
   const double total = since(start);
   addTimings(metrics, run, total);

@@ -1,8 +1,9 @@
 """clothtrack align under mpirun with 2 processes gives the aligned frames and metrics of one
 process, bit for bit, with the default chains and with 3 (two on one process, key frames fitted
-from the template), with each process's stage seconds; with --split-body-fit each process fits the
-body to half of a longer sequence, and the errors stay within a stated tolerance of one process's;
-an error on the processes ends them all with exit code 1 and a readable line, not a hang.
+from the template), each process measuring its part of the evaluation, with each process's stage
+seconds; with --split-body-fit each process fits the body to half of a longer sequence, and the
+errors stay within a stated tolerance of one process's; an error on the processes ends them all
+with exit code 1 and a readable line, not a hang.
 
 Usage: test_ranks.py MPIEXEC APP WORK. The run-describing metrics (timings, memory, processes,
 threads) are the only ones allowed to differ.
@@ -51,8 +52,9 @@ def compare(mpiexec, app, work, common, chains):
     if a["ranks"] != 1 or b["ranks"] != 2 or len(b["rank_stage_seconds"]) != 2:
         sys.exit(f"ranks: {a['ranks']} and {b['ranks']} (expected 1 and 2), "
                  f"{len(b['rank_stage_seconds'])} processes' seconds (expected 2)")
-    if not all(r["fit"] > 0 and r["correspond"] > 0 for r in b["rank_stage_seconds"]):
-        sys.exit(f"a process did no fit or correspondence: {b['rank_stage_seconds']}")
+    if not all(r["fit"] > 0 and r["correspond"] > 0 and r["evaluate"] > 0
+               for r in b["rank_stage_seconds"]):
+        sys.exit(f"a process did no fit, correspondence or evaluation: {b['rank_stage_seconds']}")
     if os.path.exists(os.path.join(two, "work", "rank_1")):
         sys.exit("the second process left its frames' copies in the work folder")
     print(f"{len(os.listdir(os.path.join(one, 'aligned')))} frames and {len(a)} metrics identical"
