@@ -12,6 +12,8 @@
 #include <clothtrack/body/BodyFit.h>
 #include <clothtrack/body/BodySequenceFitter.h>
 #include <clothtrack/body/MakeHumanImport.h>
+#include <clothtrack/body/OrientedLandmarks.h>
+#include <clothtrack/mesh/SurfaceLocator.h>
 #include <clothtrack/pipeline/BodyStage.h>
 
 #include <vtkDataArray.h>
@@ -336,29 +338,34 @@ private:
 
 TEST(BodyFit, SharedAmongProcessesFitsAsOneDoes)
 {
-  // Two processes (here threads) each track half of a walk and exchange their fits: every
-  // process ends with the same fits, as close to the truth as one process's.
+  // Two processes (here threads) each track half of a walk and exchange their fits, then each
+  // carries the landmarks of half of the frames: every process ends with the same fits, as close
+  // to the truth as one process's, and every frame's landmarks.
   const Sequence walk = capturedSequence("trousers-walkloop", 16, 0.0);
   BodyFitOptions options;
   options.shapeFrames = 4;
   const BodyFitResult whole = fitBodySequence(builtinBodyModel(), pointers(walk.captures), options);
   ThreadExchange exchange(2);
-  std::vector<BodyFitResult> parts(2);
+  std::vector<BodyStageResult> stages(2);
   std::vector<std::thread> processes;
   for (int part = 0; part < 2; ++part)
     processes.emplace_back(
         [&, part]
         {
-          BodyFitOptions own = options;
-          own.sharing.part = part;
-          own.sharing.parts = 2;
-          own.sharing.overlap = 3;
-          own.sharing.minimumSegment = 6;
-          own.sharing.allGather = [&, part](const std::string& bytes)
+          BodyStageOptions own;
+          own.fit = options;
+          own.keepBodyLandmarks = false;
+          BodyFitSharing& sharing = own.fit.sharing;
+          sharing.part = part;
+          sharing.parts = 2;
+          sharing.overlap = 3;
+          sharing.minimumSegment = 6;
+          sharing.allGather = [&, part](const std::string& bytes)
           { return exchange.allGather(part, bytes); };
-          parts[part] = fitBodySequence(builtinBodyModel(), pointers(walk.captures), own);
+          stages[part] = fitBodyAndLandmarks(builtinBodyModel(), pointers(walk.captures), own);
         });
   for (std::thread& t : processes) t.join();
+  const BodyFitResult parts[] = {stages[0].body, stages[1].body};
 
   ASSERT_EQ(parts[0].beta, parts[1].beta);
   for (size_t i = 0; i < walk.captures.size(); ++i)
@@ -368,8 +375,29 @@ TEST(BodyFit, SharedAmongProcessesFitsAsOneDoes)
     EXPECT_EQ(parts[0].frames[i].status, parts[1].frames[i].status) << i;
     EXPECT_EQ(parts[0].frames[i].extremities, parts[1].frames[i].extremities) << i;
   }
-  // The first half is tracked as one process tracks it until the shape is fitted from both.
+  // The second half is tracked from a start of its own.
   EXPECT_NE(parts[0].frames[12].pose.rotations, whole.frames[12].pose.rotations);
+  // Each frame's landmarks, as one process carries them from the same body.
+  const BodyModel& model = builtinBodyModel();
+  for (size_t i = 0; i < walk.captures.size(); ++i)
+  {
+    const TriangleMesh& frame = walk.captures[i];
+    const std::vector<OrientedSurfacePoint> expected = landmarkSeeds(transferLandmarks(
+        orientedLandmarks(model, model.posed(parts[0].beta, parts[0].frames[i].pose)), frame,
+        SurfaceLocator(frame), LandmarkTransferOptions()));
+    ASSERT_FALSE(expected.empty()) << i;
+    for (const BodyStageResult& stage : stages)
+    {
+      ASSERT_EQ(stage.landmarks[i].size(), expected.size()) << i;
+      for (size_t l = 0; l < expected.size(); ++l)
+      {
+        EXPECT_EQ(stage.landmarks[i][l].id, expected[l].id);
+        EXPECT_EQ(stage.landmarks[i][l].face, expected[l].face);
+        EXPECT_EQ(stage.landmarks[i][l].bary, expected[l].bary);
+        EXPECT_EQ(stage.landmarks[i][l].direction, expected[l].direction);
+      }
+    }
+  }
   double joints, surface, wholeJoints, worst, wholeWorst;
   fitErrors(parts[0], walk, Eigen::Matrix3d::Identity(), joints, surface, &worst);
   fitErrors(whole, walk, Eigen::Matrix3d::Identity(), wholeJoints, surface, &wholeWorst);

@@ -1,5 +1,6 @@
 #include "BodyStage.h"
 
+#include <clothtrack/base/Bytes.h>
 #include <clothtrack/base/Error.h>
 #include <clothtrack/base/Parallel.h>
 #include <clothtrack/body/OrientedLandmarks.h>
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -29,6 +31,61 @@ FrameMotion rigidFrameMotion(const RigidRegistrationOptions& options, double min
     }
   };
 }
+
+namespace
+{
+/// The frames whose landmarks this process carries: with a shared body fit its part of the
+/// sequence (the others' come from them), else all.
+std::pair<int, int> transferredFrames(const BodyStageOptions& options, int n)
+{
+  const BodyFitSharing& sharing = options.fit.sharing;
+  if (!sharing.splits(n) || !sharing.allGather || options.keepBodyLandmarks) return {0, n};
+  auto at = [&](int part)
+  { return static_cast<int>(static_cast<long long>(n) * part / sharing.parts); };
+  return {at(sharing.part), at(sharing.part + 1)};
+}
+
+std::string encodeLandmarks(const std::vector<FrameLandmarks>& landmarks, int from, int to)
+{
+  ByteWriter w;
+  w.put(static_cast<std::int32_t>(from));
+  w.put(static_cast<std::int32_t>(to));
+  for (int k = from; k < to; ++k)
+  {
+    w.put(static_cast<std::uint32_t>(landmarks[k].size()));
+    for (const OrientedSurfacePoint& p : landmarks[k])
+    {
+      w.put(static_cast<std::int32_t>(p.id));
+      w.put(static_cast<std::int32_t>(p.face));
+      for (int c = 0; c < 3; ++c) w.put(p.bary[c]);
+      for (int c = 0; c < 3; ++c) w.put(p.direction[c]);
+      w.put(p.offset);
+    }
+  }
+  return w.take();
+}
+
+void decodeLandmarks(const std::string& bytes, std::vector<FrameLandmarks>& landmarks)
+{
+  ByteReader r(bytes, "shared landmarks");
+  const int from = r.get<std::int32_t>(), to = r.get<std::int32_t>();
+  if (from < 0 || to > static_cast<int>(landmarks.size()) || from > to)
+    throw Error("shared landmarks: frames out of range");
+  for (int k = from; k < to; ++k)
+  {
+    landmarks[k].resize(r.get<std::uint32_t>());
+    for (OrientedSurfacePoint& p : landmarks[k])
+    {
+      p.id = r.get<std::int32_t>();
+      p.face = r.get<std::int32_t>();
+      for (int c = 0; c < 3; ++c) p.bary[c] = r.get<double>();
+      for (int c = 0; c < 3; ++c) p.direction[c] = r.get<double>();
+      p.offset = r.get<double>();
+    }
+  }
+  r.expectEnd();
+}
+} // namespace
 
 BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
                                     const std::vector<const TriangleMesh*>& frames,
@@ -54,8 +111,9 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model, const FrameSource& f
     out.transferred.resize(n);
   }
   out.landmarks.resize(n);
+  const auto [from, to] = transferredFrames(options, n);
   parallelFor(
-      0, n,
+      from, to,
       [&](int k)
       {
         const BodyFrameFit& fit = out.body.frames[k];
@@ -74,6 +132,10 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model, const FrameSource& f
         out.transferred[k] = std::move(transferred);
       },
       1);
+  if (to - from < n)
+    for (const std::string& bytes :
+         options.fit.sharing.allGather(encodeLandmarks(out.landmarks, from, to)))
+      decodeLandmarks(bytes, out.landmarks);
   if (progress && !progress(1.0)) throw Error("Body fit: cancelled.");
   return out;
 }

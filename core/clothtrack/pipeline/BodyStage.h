@@ -53,6 +53,8 @@ struct BodyStageResult
 };
 
 /// Fits the body to every frame (null frames are flagged failed) and transfers its landmarks.
+/// With a shared body fit (BodyFitOptions::sharing) and keepBodyLandmarks off, each process
+/// transfers the landmarks of its part of the frames and receives the others'.
 /// The body fit takes 95 % of the reported progress. Throws Error when no frame can be fitted or
 /// when cancelled.
 BodyStageResult fitBodyAndLandmarks(const BodyModel& model,
