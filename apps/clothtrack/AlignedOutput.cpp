@@ -55,7 +55,7 @@ std::filesystem::path AlignedOutput::framePath(int frameNumber) const
   return folder_ / "aligned" / frameFileName(frameNumber);
 }
 
-std::optional<FrameFit> AlignedOutput::earlier(int frameNumber) const
+std::optional<FrameFit> AlignedOutput::earlier(int frameNumber, Eigen::VectorXd* errors) const
 {
   const std::filesystem::path path = framePath(frameNumber);
   if (!std::filesystem::exists(path)) return std::nullopt;
@@ -93,6 +93,16 @@ std::optional<FrameFit> AlignedOutput::earlier(int frameNumber) const
   fit.doubt = doubt->GetComponent(0, 0);
   fit.recovery = recovery->GetValue(0);
   if (!fit.positions.allFinite()) return std::nullopt;
+  if (errors)
+  {
+    errors->resize(0);
+    vtkDataArray* error = mesh->GetPointData()->GetArray("Error");
+    if (error && error->GetNumberOfTuples() == n && error->GetNumberOfComponents() == 1)
+    {
+      errors->resize(n);
+      for (vtkIdType i = 0; i < n; ++i) (*errors)[i] = error->GetComponent(i, 0);
+    }
+  }
   return fit;
 }
 

@@ -20,8 +20,9 @@ public:
   /// aligned/aligned_NNNN.vtp of the input's frame number.
   std::filesystem::path framePath(int frameNumber) const;
   /// The fit of a frame written by an earlier run (positions, correspondences used, surface
-  /// distances, attempts, doubt and recovery), when it is readable and fits this template.
-  std::optional<FrameFit> earlier(int frameNumber) const;
+  /// distances, attempts, doubt and recovery), when it is readable and fits this template;
+  /// `errors`, when given, receives its errors against the ground truth (empty without them).
+  std::optional<FrameFit> earlier(int frameNumber, Eigen::VectorXd* errors = nullptr) const;
   /// Writes one frame (called from a writer thread: everything is passed by value).
   void write(int frameNumber, const FrameFit& fit, const Eigen::VectorXd& errors) const;
   /// aligned.pvd, listing the frames at their times.

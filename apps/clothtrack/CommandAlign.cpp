@@ -430,7 +430,8 @@ int chainPredecessor(const Run& run, int k)
 
 /// With several processes: the seconds of every frame and whether it was resumed (each process
 /// knows its own frames'), and on the leader the other processes' fits read back from
-/// OUT/aligned with their errors, as its own would be after the fit.
+/// OUT/aligned with the errors that their processes wrote there (measured again by `errorsOf`
+/// when a ground truth is given but a frame lacks them), as its own would be after the fit.
 void shareFits(Run& run, const AlignedOutput& output,
                const std::function<void(int, const Points&)>& errorsOf)
 {
@@ -450,11 +451,15 @@ void shareFits(Run& run, const AlignedOutput& output,
   for (int k = 0; k < n; ++k)
   {
     if (fitsFrame(run, k)) continue;
-    std::optional<FrameFit> fit = output.earlier(run.input.frameNumber[k]);
+    Eigen::VectorXd errors;
+    std::optional<FrameFit> fit = output.earlier(run.input.frameNumber[k], &errors);
     if (!fit)
       throw Error(output.framePath(run.input.frameNumber[k]).string() +
                   ": another process did not leave this frame");
-    errorsOf(k, fit->positions);
+    if (run.verticesWithTruth > 0 && errors.size() > 0)
+      run.errors[k] = std::move(errors);
+    else
+      errorsOf(k, fit->positions);
     fit->meanSurfaceDistance = fit->surfaceDistance.mean();
     fit->positions = Points();
     fit->used = {};
