@@ -400,7 +400,11 @@ def main():
     image_dir = "bench/results" if update else str(out)
     md += ["![%s](%s/%s)" % (name, image_dir, name) for name in images] + [""]
     md += ["Commands (paths relative to the repository; `out/...` is the working folder):", "", "```"]
-    md += [c.replace(str(out), "OUT") for c in bench.commands] + ["```", "", END]
+    # Commands name the working folder relative to the repository; one given elsewhere (--out) is
+    # shown as the default one, so that the listed commands read the same.
+    relative_out = os.path.relpath(out, ROOT)
+    default_out = "out/bench-" + mode
+    md += [c.replace(relative_out, default_out) for c in bench.commands] + ["```", "", END]
     text = "\n".join(md) + "\n"
     (out / "benchmarks.md").write_text(text)
     results = {"machine": info, "mode": mode, "seconds": elapsed,
