@@ -428,8 +428,9 @@ int chainPredecessor(const Run& run, int k)
   return -1;
 }
 
-/// With several processes: the seconds of every frame and whether it was resumed (each process
-/// knows its own frames'), and on the leader the other processes' fits read back from
+/// With several processes: the seconds of every frame, whether it was resumed and the surface
+/// distance its fit measured (each process knows its own frames'), and on the leader the other
+/// processes' fits read back from
 /// OUT/aligned with the errors that their processes wrote there (measured again by `errorsOf`
 /// when a ground truth is given but a frame lacks them), as its own would be after the fit.
 void shareFits(Run& run, const AlignedOutput& output,
@@ -437,16 +438,19 @@ void shareFits(Run& run, const AlignedOutput& output,
 {
   if (ranks::count() == 1) return;
   const int n = run.input.count();
-  std::vector<double> shared(2 * n + 1, 0.0);
+  std::vector<double> shared(3 * n + 1, 0.0);
   for (int k = 0; k < n; ++k)
     if (fitsFrame(run, k))
     {
-      shared[2 * k] = run.fits[k].seconds;
-      shared[2 * k + 1] = run.fits[k].resumed;
+      shared[3 * k] = run.fits[k].seconds;
+      shared[3 * k + 1] = run.fits[k].resumed;
+      shared[3 * k + 2] = fittedSurfaceDistance(run.fits[k]);
     }
-  shared[2 * n] = run.reusedCorrespondences;
+  shared[3 * n] = run.reusedCorrespondences;
   ranks::sum(shared);
-  run.reusedCorrespondences = static_cast<int>(shared[2 * n]);
+  run.reusedCorrespondences = static_cast<int>(shared[3 * n]);
+  for (int k = 0; k < n; ++k)
+    if (!fitsFrame(run, k)) run.fits[k].meanSurfaceDistance = shared[3 * k + 2];
   if (!ranks::leader()) return;
   for (int k = 0; k < n; ++k)
   {
@@ -460,12 +464,12 @@ void shareFits(Run& run, const AlignedOutput& output,
       run.errors[k] = std::move(errors);
     else
       errorsOf(k, fit->positions);
-    fit->meanSurfaceDistance = fit->surfaceDistance.mean();
+    fit->meanSurfaceDistance = shared[3 * k + 2];
     fit->positions = Points();
     fit->used = {};
     fit->surfaceDistance = Eigen::VectorXd();
-    fit->seconds = shared[2 * k];
-    fit->resumed = shared[2 * k + 1] > 0;
+    fit->seconds = shared[3 * k];
+    fit->resumed = shared[3 * k + 1] > 0;
     run.fits[k] = std::move(*fit);
   }
 }
@@ -638,26 +642,15 @@ Points alignedPositions(const Run& run, const AlignedOutput& output, int k)
   return std::move(fit->positions);
 }
 
-/// Frame k's surface distance as its fit measured it: from this process's fit, or from the
-/// aligned frame another process wrote; -1 when neither has it.
-double fittedSurfaceDistance(const Run& run, const AlignedOutput& output, int k)
-{
-  const FrameFit& f = run.fits[k];
-  if (f.meanSurfaceDistance >= 0) return f.meanSurfaceDistance;
-  if (f.surfaceDistance.size() > 0) return f.surfaceDistance.mean();
-  const std::optional<FrameFit> written = output.earlier(run.input.frameNumber[k]);
-  return written && written->surfaceDistance.size() > 0 ? written->surfaceDistance.mean() : -1.0;
-}
-
 /// How well the aligned frames follow the input without a ground truth. With several processes
 /// each measures its part of the sequence and the leader joins the parts, as one process would
 /// have measured them; the others get nothing.
 SequenceQuality measureQuality(const Run& run, const AlignedOutput& output)
 {
   const int n = run.input.count();
-  const auto [from, to] = framesOfPart(n, ranks::rank(), ranks::count());
+  const auto [from, to] = rangePart(n, ranks::rank(), ranks::count());
   std::vector<double> known(n, -1.0);
-  for (int k = from; k < to; ++k) known[k] = fittedSurfaceDistance(run, output, k);
+  for (int k = from; k < to; ++k) known[k] = fittedSurfaceDistance(run.fits[k]);
   SequenceQuality part =
       sequenceQualityOfFrames([&](int k) { return alignedPositions(run, output, k); },
                               run.templateMesh().F, *run.input.frames, known, run.templateFrame,

@@ -202,7 +202,7 @@ TEST(FrameSource, QualityMeasuredInPartsEqualsTheWhole)
   std::vector<std::string> bytes;
   for (int part = 0; part < parts; ++part)
   {
-    const auto [from, to] = framesOfPart(n, part, parts);
+    const auto [from, to] = rangePart(n, part, parts);
     const SequenceQuality q =
         sequenceQualityOfFrames(access, sphere.F, frames, {}, 4, {}, {}, from, to);
     bytes.push_back(encodeSequenceQuality(q, from, to));

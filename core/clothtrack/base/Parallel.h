@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <utility>
 
 namespace clothtrack
 {
@@ -58,6 +59,14 @@ template <class Body> void parallelFor(int begin, int end, const Body& body, int
                           begin + static_cast<int>(static_cast<long long>(n) * (t + 1) / threads);
                       for (int i = from; i < to; ++i) body(i);
                     });
+}
+
+/// Indices [first, second) of the `part`-th of `parts` contiguous, nearly equal parts of
+/// [0, count): how the processes sharing a run split a sequence's frames.
+inline std::pair<int, int> rangePart(int count, int part, int parts)
+{
+  auto at = [&](int p) { return static_cast<int>(static_cast<long long>(count) * p / parts); };
+  return {at(part), at(part + 1)};
 }
 
 /// Parts of the fixed split of forSpans and parallelSum.

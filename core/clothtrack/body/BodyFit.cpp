@@ -3,6 +3,7 @@
 #include "BodySequenceFitter.h"
 #include "Extremities.h"
 
+#include <clothtrack/base/Bytes.h>
 #include <clothtrack/base/Error.h>
 #include <clothtrack/base/Parallel.h>
 #include <clothtrack/mesh/Geodesic.h>
@@ -12,7 +13,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -348,8 +348,7 @@ Segment segmentOf(const std::vector<int>& usable, const BodyFitSharing& sharing)
 {
   const int m = static_cast<int>(usable.size());
   if (!sharing.splits(m)) return {usable, usable, usable};
-  const int begin = static_cast<int>(static_cast<long long>(m) * sharing.part / sharing.parts);
-  const int end = static_cast<int>(static_cast<long long>(m) * (sharing.part + 1) / sharing.parts);
+  const auto [begin, end] = rangePart(m, sharing.part, sharing.parts);
   const int overlap = std::max(1, sharing.overlap);
   auto frames = [&](int from, int to) {
     return std::vector<int>(usable.begin() + std::max(0, from), usable.begin() + std::min(m, to));
@@ -370,14 +369,14 @@ void shareFits(const BodyFitSharing& sharing, const std::vector<int>& own,
 void shareShape(const BodyFitSharing& sharing, SequenceFitter& fitter)
 {
   const Eigen::VectorXd& beta = fitter.samples().beta();
-  std::string own;
+  ByteWriter own;
   if (sharing.part == 0)
-    own.assign(reinterpret_cast<const char*>(beta.data()), beta.size() * sizeof(double));
-  const std::string first = sharing.allGather(own).at(0);
-  if (first.size() != beta.size() * sizeof(double))
-    throw Error("shared body fit: the processes' shapes differ in size");
+    for (double b : beta) own.put(b);
+  const std::string first = sharing.allGather(own.take()).at(0);
+  ByteReader read(first, "shared body shape");
   Eigen::VectorXd shared(beta.size());
-  std::memcpy(shared.data(), first.data(), first.size());
+  for (double& b : shared) b = read.get<double>();
+  read.expectEnd();
   fitter.samples().setShape(shared);
 }
 } // namespace

@@ -122,12 +122,6 @@ void summarise(SequenceQuality& q)
   q.meanJitter = mean(q.jitter);
 }
 
-std::pair<int, int> framesOfPart(int frames, int part, int parts)
-{
-  auto at = [&](int p) { return static_cast<int>(static_cast<long long>(frames) * p / parts); };
-  return {at(part), at(part + 1)};
-}
-
 std::string encodeSequenceQuality(const SequenceQuality& q, int from, int to)
 {
   ByteWriter w;

@@ -50,7 +50,7 @@ SequenceQuality sequenceQuality(const AlignedAccess& aligned, const Triangles& t
                                 int templateFrame = -1, const FrameConfidenceOptions& options = {},
                                 const TemplatePosedByBody& posedByBody = {});
 
-// Processes sharing a run each measure their part of the sequence (framesOfPart), send it as
+// Processes sharing a run each measure their part of the sequence (rangePart), send it as
 // bytes (encodeSequenceQuality), and one joins the parts (joinSequenceQuality): the result is
 // sequenceQuality's, bit for bit.
 
@@ -64,8 +64,6 @@ SequenceQuality sequenceQualityOfFrames(const AlignedAccess& aligned,
                                         const TemplatePosedByBody& posedByBody, int from, int to);
 /// The means and the doubtful frames of a measured sequence.
 void summarise(SequenceQuality& quality);
-/// Frames [first, second) of the `part`-th of `parts` contiguous parts of `frames` frames.
-std::pair<int, int> framesOfPart(int frames, int part, int parts);
 /// The measures of frames [from, to) as bytes.
 std::string encodeSequenceQuality(const SequenceQuality& quality, int from, int to);
 /// The whole sequence's quality from its parts' bytes, in frame order. Throws Error when they do

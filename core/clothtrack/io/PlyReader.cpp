@@ -138,7 +138,7 @@ public:
   size_t position() const { return pos_; }
   void seek(size_t position) { pos_ = position; }
 
-  /// An ASCII word that is a whole number (long: a decimal integer; double: anything
+  /// An ASCII word that is one whole number (long: a decimal integer; double: anything
   /// std::from_chars takes), read and passed; false (and nothing passed) for anything else, which
   /// read() then handles. readAscii keeps its own integer branch: calling this one there read
   /// ASCII PLY 8 % slower (bench_read, samba frames).

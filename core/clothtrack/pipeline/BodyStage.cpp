@@ -40,9 +40,7 @@ std::pair<int, int> transferredFrames(const BodyStageOptions& options, int n)
 {
   const BodyFitSharing& sharing = options.fit.sharing;
   if (!sharing.splits(n) || !sharing.allGather || options.keepBodyLandmarks) return {0, n};
-  auto at = [&](int part)
-  { return static_cast<int>(static_cast<long long>(n) * part / sharing.parts); };
-  return {at(sharing.part), at(sharing.part + 1)};
+  return rangePart(n, sharing.part, sharing.parts);
 }
 
 std::string encodeLandmarks(const std::vector<FrameLandmarks>& landmarks, int from, int to)

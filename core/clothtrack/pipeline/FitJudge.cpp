@@ -23,6 +23,12 @@ void judgeFits(SequenceFitHooks& hooks, const TriangleMesh& templateMesh,
   hooks.retryAbove = options.retrySeverity;
 }
 
+double fittedSurfaceDistance(const FrameFit& fit)
+{
+  if (fit.meanSurfaceDistance >= 0) return fit.meanSurfaceDistance;
+  return fit.surfaceDistance.size() > 0 ? fit.surfaceDistance.mean() : -1.0;
+}
+
 SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
                                       const Triangles& templateFaces,
                                       const std::vector<const TriangleMesh*>& frames,
@@ -44,10 +50,7 @@ SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
                                       const TemplatePosedByBody& posedByBody)
 {
   std::vector<double> known;
-  for (const FrameFit& f : fits)
-    known.push_back(f.meanSurfaceDistance >= 0     ? f.meanSurfaceDistance
-                    : f.surfaceDistance.size() > 0 ? f.surfaceDistance.mean()
-                                                   : -1.0);
+  for (const FrameFit& f : fits) known.push_back(fittedSurfaceDistance(f));
   return sequenceQuality(aligned, templateFaces, frames, known, templateFrame, options.limits,
                          posedByBody);
 }

@@ -24,6 +24,10 @@ struct FitJudgeOptions
 void judgeFits(SequenceFitHooks& hooks, const TriangleMesh& templateMesh,
                const FitJudgeOptions& options = {}, TemplatePosedByBody posedByBody = {});
 
+/// The mean surface distance a frame's fit measured (kept when its vertices were dropped, else
+/// from its per-vertex distances); -1 when it has none (a resumed frame).
+double fittedSurfaceDistance(const FrameFit& fit);
+
 /// The quality of a fitted sequence and each frame's confidence (eval/SequenceQuality.h), reusing
 /// the surface distances the fit measured (resumed frames have none and are measured).
 SequenceQuality fittedSequenceQuality(const std::vector<FrameFit>& fits,
