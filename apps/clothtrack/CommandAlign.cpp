@@ -136,8 +136,8 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
   const BodyFitOptions& f = o.fit;
   nlohmann::json stages = nlohmann::json::array();
   for (const BodyFitStage& st : f.stages)
-    stages.push_back(
-        {st.landmarkWeight, st.nearestWeight, st.insideWeight, st.iterations, st.searchRadius});
+    stages.push_back({st.landmarkWeight, st.nearestWeight, st.insideWeight, st.iterations,
+                      st.searchRadius, st.coverWeight});
   return {{"revision", kBodyFitRevision},
           {"stages", stages},
           {"weights",
@@ -146,6 +146,7 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
           {"shape", {f.shapeComponents, f.shapeFrames, f.shapeRounds}},
           {"samples", f.samples},
           {"robust_scale", f.robustScale},
+          {"cover", {f.shapeCoverWeight, f.coverScale}},
           {"extremities",
            {f.extremityPersistence, f.extremityGate, f.handGate, f.reachTolerance,
             f.shapeReachTolerance}},

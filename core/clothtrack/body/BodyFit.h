@@ -10,6 +10,8 @@
 //    normals disagree are dropped);
 //  - E_w: body samples OUTSIDE the frame (signed distance to the closest point, positive
 //    outside) are pushed in, so that the body stays under the clothing;
+//  - E_c (the shape's steps only, by default): the frame's vertices to their nearest body
+//    samples, so that a body thinner than the person grows to fill the torso;
 // plus a temporal term (joint rotations close to the previous frame's) and weak priors (joint
 // rotations and beta towards zero: beta ~ N(0, I) in the model's units).
 //
@@ -63,6 +65,12 @@ struct BodyFitStage
   /// Closest frame points are searched this far (metres): wide while the body is far, narrow
   /// later, where a sample with nothing near is deep under the cloth and should not pull.
   double searchRadius;
+  /// w_c, E_c: each of up to 1000 frame vertices pulls its nearest body sample towards its
+  /// tangent plane (Cauchy weights of scale BodyFitOptions::coverScale; pairs whose normals
+  /// disagree dropped). 0: off. E_n lets a body thinner than the person hug one side of the
+  /// torso, as the robust weights favour one close side over two half-way ones; the far side
+  /// pulls it back here.
+  double coverWeight = 0.0;
 };
 
 struct BodyFitOptions
@@ -78,12 +86,18 @@ struct BodyFitOptions
   /// Prior multiplier on rotations a joint barely makes (a knee's sideways bend; fractions of it
   /// on hip twist, ankle, toe, clavicle and wrist rotations)
   double hingeStiffness = 100.0;
-  double shapePriorWeight = 2e-5;     ///< on beta
-  int shapeComponents = 16;           ///< leading components fitted (at most the model's)
-  int shapeFrames = 8;                ///< key frames for the shape
-  int shapeRounds = 3;                ///< alternations of shape and key-frame poses
-  int samples = 600;                  ///< body vertices used by the dense terms
-  double robustScale = 0.03;          ///< Cauchy scale of E_n, metres
+  double shapePriorWeight = 2e-5; ///< on beta
+  /// w_c in the shape's steps: the frame's vertices pull their nearest body samples, so that a
+  /// body thinner than the person (pjump) grows to fill the torso rather than hug one side of
+  /// it. The poses' own stages leave it at 0 (BodyFitStage::coverWeight).
+  double shapeCoverWeight = 1.0;
+  int shapeComponents = 16;  ///< leading components fitted (at most the model's)
+  int shapeFrames = 8;       ///< key frames for the shape
+  int shapeRounds = 3;       ///< alternations of shape and key-frame poses
+  int samples = 600;         ///< body vertices used by the dense terms
+  double robustScale = 0.03; ///< Cauchy scale of E_n, metres
+  /// Cauchy scale of the cover term (BodyFitStage::coverWeight), metres.
+  double coverScale = 0.05;
   double extremityPersistence = 0.13; ///< metres
   double extremityGate =
       0.35; ///< head and toes: detected and body extremities further apart are not paired

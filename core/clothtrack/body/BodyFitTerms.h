@@ -21,6 +21,8 @@ struct FrameSurface
   Vec3 centroid = Vec3::Zero();
   std::vector<Vec3> extremities;
   mutable std::vector<int> hints; ///< last closest face of each body sample
+  /// At most 1000 evenly spread vertices: the frame side of the cover term and frameToBody.
+  std::vector<int> spread;
 
   /// Detects the extremities unless `known` gives them.
   FrameSurface(const TriangleMesh& frame, double persistence, const std::vector<Vec3>* known)
@@ -36,6 +38,10 @@ struct FrameSurface
                    frame.vertex(frame.F(f, 2))) /
                   3.0;
     centroid /= std::max(areas.sum(), 1e-12);
+    const int n = frame.numVertices();
+    const int count = std::min(n, 1000);
+    for (int i = 0; i < count; ++i)
+      spread.push_back(static_cast<int>(static_cast<long long>(i) * n / count));
     if (known)
     {
       extremities = *known;

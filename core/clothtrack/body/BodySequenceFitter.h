@@ -66,6 +66,7 @@ public:
       if (stage.insideWeight > 0.0 && normal.dot(diff) > 0.0)
         a.planes.push_back({i, target, normal, stage.insideWeight / ns, true});
     }
+    if (stage.coverWeight > 0.0) cover(frame, p, normals, stage.coverWeight, a);
     if (stage.landmarkWeight > 0.0 && !frame.extremities.empty())
     {
       std::array<int, 5> match;
@@ -86,6 +87,30 @@ public:
       }
     }
     return a;
+  }
+
+  /// Rows of E_c (BodyFitStage::coverWeight): each spread frame vertex pulls its nearest body
+  /// sample, when their normals agree, towards the vertex's tangent plane, with Cauchy weights.
+  /// What the body-to-frame rows leave out, the frame's far side, pulls here.
+  void cover(const FrameSurface& frame, const Points& p, const Points& normals, double weight,
+             Assignments& a) const
+  {
+    const int ns = samples_.numSamples();
+    const PointIndex body(p.topRows(ns));
+    const int m = static_cast<int>(frame.spread.size());
+    std::vector<Neighbour> nearest(m);
+    parallelFor(0, m,
+                [&](int k) { nearest[k] = body.nearest(frame.mesh->vertex(frame.spread[k])); });
+    const double c2 = options_.coverScale * options_.coverScale;
+    for (int k = 0; k < m; ++k)
+    {
+      const int i = nearest[k].index;
+      const Vec3 normal = frame.normals.row(frame.spread[k]).transpose();
+      if (i < 0 || normals.row(i).dot(normal) <= 0.0 || normal.squaredNorm() < 0.5) continue;
+      const double d2 = nearest[k].distance * nearest[k].distance;
+      a.planes.push_back({i, frame.mesh->vertex(frame.spread[k]), normal.normalized(),
+                          weight / m * c2 / (c2 + d2), false});
+    }
   }
 
   double regulariser(const Eigen::VectorXd& x, const Eigen::VectorXd* previous) const
@@ -234,7 +259,7 @@ public:
                 });
     double total = 0.0;
     for (double c : cost) total += c;
-    last.nearestWeight = last.insideWeight = 0.0; // only the extremity rows below
+    last.nearestWeight = last.insideWeight = last.coverWeight = 0.0; // only the extremity rows
     const Assignments extremities = assign(frame, pose, p, normals, last, options_.extremityGate);
     return total / ns + extremities.energy(p);
   }
@@ -247,16 +272,11 @@ public:
   std::vector<double> frameToBody(const FrameSurface& frame, const BodyPose& pose) const
   {
     const PointIndex body(samples_.pose(pose).topRows(samples_.numSamples()));
-    const TriangleMesh& mesh = *frame.mesh;
-    const int n = mesh.numVertices();
-    const int count = std::min(n, 1000);
+    const int count = static_cast<int>(frame.spread.size());
     std::vector<double> distances(count);
     parallelFor(0, count,
                 [&](int i)
-                {
-                  const int v = static_cast<int>(static_cast<long long>(i) * n / count);
-                  distances[i] = body.nearest(mesh.vertex(v)).distance;
-                });
+                { distances[i] = body.nearest(frame.mesh->vertex(frame.spread[i])).distance; });
     return distances;
   }
 
@@ -517,7 +537,8 @@ public:
   {
     const int k = std::min(options_.shapeComponents, samples_.numComponents());
     if (k <= 0 || frames.empty()) return;
-    const BodyFitStage& stage = options_.stages.back();
+    BodyFitStage stage = options_.stages.back();
+    stage.coverWeight = options_.shapeCoverWeight;
     double lambda = 1e-3;
     for (int it = 0; it < iterations; ++it)
     {
