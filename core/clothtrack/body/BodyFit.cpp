@@ -236,7 +236,11 @@ void fitShape(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector
     keySurfaces.push_back(&surfaces.get(i));
     keyPoses.push_back(fits[i].pose);
   }
-  const std::vector<BodyFitStage> refine(options.stages.end() - 1, options.stages.end());
+  // The key frames' poses with E_c as the shape's steps have it: a shape grown towards the
+  // frame while its poses stay as the thinner body left them takes up their errors (a leg too
+  // long in a squat).
+  std::vector<BodyFitStage> refine(options.stages.end() - 1, options.stages.end());
+  refine.back().coverWeight = options.shapeCoverWeight;
   for (int round = 0; round < options.shapeRounds; ++round)
   {
     fitter.fitShape(keySurfaces, keyPoses, 4);

@@ -10,8 +10,8 @@
 //    normals disagree are dropped);
 //  - E_w: body samples OUTSIDE the frame (signed distance to the closest point, positive
 //    outside) are pushed in, so that the body stays under the clothing;
-//  - E_c (the shape's steps only, by default): the frame's vertices to their nearest body
-//    samples, so that a body thinner than the person grows to fill the torso;
+//  - E_c (while the shape is estimated, by default): the frame's vertices to their nearest
+//    body samples, so that a body thinner than the person grows to fill the torso;
 // plus a temporal term (joint rotations close to the previous frame's) and weak priors (joint
 // rotations and beta towards zero: beta ~ N(0, I) in the model's units).
 //
@@ -87,9 +87,10 @@ struct BodyFitOptions
   /// on hip twist, ankle, toe, clavicle and wrist rotations)
   double hingeStiffness = 100.0;
   double shapePriorWeight = 2e-5; ///< on beta
-  /// w_c in the shape's steps: the frame's vertices pull their nearest body samples, so that a
-  /// body thinner than the person (pjump) grows to fill the torso rather than hug one side of
-  /// it. The poses' own stages leave it at 0 (BodyFitStage::coverWeight).
+  /// w_c in the shape's estimation (its steps on beta and the key frames' poses between them):
+  /// the frame's vertices pull their nearest body samples, so that a body thinner than the
+  /// person (pjump) grows to fill the torso rather than lie against one side of it. The passes
+  /// over the sequence leave it at 0 (BodyFitStage::coverWeight).
   double shapeCoverWeight = 1.0;
   int shapeComponents = 16;  ///< leading components fitted (at most the model's)
   int shapeFrames = 8;       ///< key frames for the shape
