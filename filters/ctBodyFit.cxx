@@ -36,6 +36,9 @@ vtkStandardNewMacro(ctBodyFit);
 ctOptionClampDefinition(ctBodyFit, TemporalWeight, double, Options.fit.temporalWeight, 0.0, 1000.0);
 ctOptionClampDefinition(ctBodyFit, RootTemporalWeight, double, Options.fit.rootTemporalWeight, 0.0,
                         1000.0);
+ctOptionClampDefinition(ctBodyFit, LegTemporalWeight, double, Options.fit.legTemporalWeight, 0.0,
+                        1000.0);
+ctOptionClampDefinition(ctBodyFit, LegRaiseStart, double, Options.fit.legRaiseStart, 0.0, 1.5);
 ctOptionClampDefinition(ctBodyFit, ShapeFrames, int, Options.fit.shapeFrames, 1, 1000);
 ctOptionClampDefinition(ctBodyFit, Samples, int, Options.fit.samples, 50, 100000);
 ctOptionClampDefinition(ctBodyFit, OutsideTolerance, double, Options.transfer.outsideTolerance, 0.0,
@@ -278,6 +281,8 @@ void ctBodyFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InsideWeight: " << this->InsideWeight << "\n";
   os << indent << "TemporalWeight: " << this->Options.fit.temporalWeight << "\n";
   os << indent << "RootTemporalWeight: " << this->Options.fit.rootTemporalWeight << "\n";
+  os << indent << "LegTemporalWeight: " << this->Options.fit.legTemporalWeight << "\n";
+  os << indent << "LegRaiseStart: " << this->Options.fit.legRaiseStart << "\n";
   os << indent << "ShapeFrames: " << this->Options.fit.shapeFrames << "\n";
   os << indent << "Samples: " << this->Options.fit.samples << "\n";
   os << indent << "OutsideTolerance: " << this->Options.transfer.outsideTolerance << "\n";

@@ -63,6 +63,12 @@ public:
   /// The same for the root's rotation (lighter: a turning body is not held back).
   virtual void SetRootTemporalWeight(double value);
   virtual double GetRootTemporalWeight();
+  /// The same for the hips' and knees' rotations (lighter: a knee raised fast is not held back).
+  virtual void SetLegTemporalWeight(double value);
+  virtual double GetLegTemporalWeight();
+  /// Hip flexion (radians) of the raised-leg starts of the final pass; 0: none.
+  virtual void SetLegRaiseStart(double value);
+  virtual double GetLegRaiseStart();
   /// Key frames used to estimate the shape.
   virtual void SetShapeFrames(int value);
   virtual int GetShapeFrames();

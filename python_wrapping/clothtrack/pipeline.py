@@ -87,8 +87,8 @@ def _as_sequence(frames, frame_rate):
 # Keywords of align() that set a filter property of the same name (CamelCase); None keeps the
 # filter's default, which is the core's (docs/parameters.md).
 _STAGE_KEYWORDS = {
-    "body": ("samples", "temporal_weight", "root_temporal_weight", "outside_tolerance",
-             "inside_tolerance", "register_frames"),
+    "body": ("samples", "temporal_weight", "root_temporal_weight", "leg_temporal_weight",
+             "leg_raise_start", "outside_tolerance", "inside_tolerance", "register_frames"),
     "correspondence": ("epsilon", "minimum_radius", "maximum_radius", "minimum_seed_consensus",
                        "minimum_shell_area", "persistence"),
     "fit": ("solver_tolerance", "intermediate_tolerance", "refactor_steps", "nearest_reuse",

@@ -16,6 +16,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <utility>
 
 namespace clothtrack
 {
@@ -253,6 +254,23 @@ void fitShape(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector
   for (int i : keys) surfaces.release(i);
 }
 
+/// Third and fourth starts for the final pass: `fit` with one leg raised (hip flexed, knee
+/// folded), fitted with the temporal prior towards that start, each kept if it explains the frame
+/// better both ways. A track from the predecessor falls behind a knee raised fast under wide
+/// trousers, where the straight leg still lies inside the cloth.
+void tryRaisedLegs(SequenceFitter& fitter, const FrameSurface& frame,
+                   const std::vector<BodyFitStage>& stages, double raise, BodyFrameFit& fit)
+{
+  if (raise <= 0.0) return;
+  for (const auto& [hip, knee] : {std::pair{LeftHip, LeftKnee}, std::pair{RightHip, RightKnee}})
+  {
+    BodyPose raised = fit.pose;
+    raised.rotations(hip, 0) -= raise; // hip flexion is a negative rotation about X
+    raised.rotations(knee, 0) += 1.5 * raise;
+    fitter.refitFromNeighbour(frame, raised, stages, fit, /*coverAsMuch=*/false);
+  }
+}
+
 /// Pass 2: the final shape, each frame from its pass-1 pose, smooth in time where it continues
 /// its predecessor. The poses are already close: the last stage suffices. Where the frame
 /// continues its predecessor, that frame's final pose is a second start: a first-pass track that
@@ -273,6 +291,7 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
     if (previous && fit.continuesPrevious)
       fitter.refitFromNeighbour(surfaces.get(i), *previous, finalStages, fit,
                                 /*coverAsMuch=*/false);
+    tryRaisedLegs(fitter, surfaces.get(i), finalStages, options.legRaiseStart, fit);
     if (fit.status == BodyFitStatus::Poor && fit.message.empty()) fit.message = "poor fit";
     previous = &fit.pose;
     surfaces.release(i);

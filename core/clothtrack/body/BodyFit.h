@@ -82,6 +82,11 @@ struct BodyFitOptions
   /// metres), and a heavier prior there holds a turning body back, which then twists its spine
   /// and crosses its legs to follow the frame.
   double rootTemporalWeight = 0.0003;
+  /// The same on the hips' and knees' rotations. A knee raised at 5 rad/s (a marching walk, 0.2
+  /// rad a frame) costs 0.01 x 0.04 = 4e-4 at the general weight, several times a good fit's
+  /// dense terms: the leg was held half-way. 0.003 on every joint cost pjump 0.5 cm (BENCHMARKS.md,
+  /// "knees raised fast").
+  double legTemporalWeight = 0.003;
   double posePriorWeight = 0.0002; ///< on joint rotations (root excluded)
   /// Prior multiplier on rotations a joint barely makes (a knee's sideways bend; fractions of it
   /// on hip twist, ankle, toe, clavicle and wrist rotations)
@@ -110,6 +115,12 @@ struct BodyFitOptions
   /// limbs are much shorter than a tall person's; with the toes refused for being out of reach,
   /// the shape never grows to reach them (a 1.97 m person was fitted 1.65 m tall).
   double shapeReachTolerance = 1.4;
+  /// The final pass also starts each frame with one leg raised: its hip flexed by this much
+  /// (radians) and its knee folded by 1.5 times it, with the temporal prior towards that start,
+  /// and keeps the result when it explains the frame better both ways. A straight leg inside wide
+  /// trousers still lies inside the cloth, so the dense terms do not lift it towards a raised
+  /// knee. 0: off.
+  double legRaiseStart = 0.6;
   int headings = 8; ///< headings tried when (re)initialising
   /// First-frame fits facing more than 90 degrees apart whose scores are within this factor are
   /// told apart by the pose prior (front and back look alike under loose clothing).
@@ -138,7 +149,7 @@ struct BodyFitOptions
 
 /// Changes whenever the fit's results change for the same options, so that results cached by an
 /// older release are not reused.
-inline constexpr int kBodyFitRevision = 5;
+inline constexpr int kBodyFitRevision = 6;
 
 enum class BodyFitStatus : int
 {

@@ -29,10 +29,14 @@ public:
   /// Multiple of a limb's length within which a detected extremity may hang from its root.
   void setReachTolerance(double tolerance) { reachTolerance_ = tolerance; }
 
-  /// Weight of the temporal prior on rotation parameter k: the root's is the lighter one.
+  /// Weight of the temporal prior on rotation parameter k: the root's and the legs' are lighter.
   double temporalWeight(int k) const
   {
-    return k < 3 ? options_.rootTemporalWeight : options_.temporalWeight;
+    if (k < 3) return options_.rootTemporalWeight;
+    const int joint = k / 3;
+    const bool leg =
+        joint == LeftHip || joint == RightHip || joint == LeftKnee || joint == RightKnee;
+    return leg ? options_.legTemporalWeight : options_.temporalWeight;
   }
 
   /// Weight of the one-sided penalty on a knee bending backwards.
