@@ -29,9 +29,10 @@
 // and is also started from the poses of the frames fitted before it; the fit that explains the
 // frame best, both ways (body to frame and frame to body), is kept. The shape is estimated on
 // evenly spread key frames alternating with their poses, then every frame is fitted again with the
-// final shape. Last, a fit that leaves much more of its frame unexplained than the sequence's
-// others is poor (a limb fitted in the wrong place), and every poor fit is started again from the
-// poses of the sequence's ok fits.
+// final shape, also from its predecessor's pose and with either leg raised (a knee raised fast
+// under wide trousers), the fit that explains it best both ways kept. Last, a fit that leaves much
+// more of its frame unexplained than the sequence's others is poor (a limb fitted in the wrong
+// place), and every poor fit is started again from the poses of the sequence's ok fits.
 //
 // Shared among processes (BodyFitOptions::sharing), each process tracks its own segment of the
 // sequence, starting BodyFitSharing::overlap frames before it (the first from all headings, as
