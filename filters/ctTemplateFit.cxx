@@ -45,6 +45,7 @@ ctOptionClampDefinition(ctTemplateFit, MaximumNearestDistance, double,
                         Options.maximumNearestDistance, 1e-6, 100.0);
 ctOptionClampDefinition(ctTemplateFit, MaximumNormalAngle, double, Options.maximumNormalAngle, 1.0,
                         180.0);
+ctOptionClampDefinition(ctTemplateFit, CoverageWeight, double, Options.coverageWeight, 0.0, 100.0);
 ctOptionDefinition(ctTemplateFit, UseCorrespondence, bool, Options.useCorrespondence);
 ctOptionDefinition(ctTemplateFit, UseNearest, bool, Options.useNearest);
 ctOptionClampDefinition(ctTemplateFit, PredictRadius, double, Prediction.predictRadius, 0.0, 100.0);
@@ -418,6 +419,7 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntermediateTolerance: " << this->Options.intermediateTolerance << "\n";
   os << indent << "RefactorSteps: " << this->Options.refactorSteps << "\n";
   os << indent << "NearestReuse: " << this->Options.nearestReuse << "\n";
+  os << indent << "CoverageWeight: " << this->Options.coverageWeight << "\n";
   os << indent << "NearestEvery: " << this->Options.nearestEvery << "\n";
   os << indent << "MaximumNearestDistance: " << this->Options.maximumNearestDistance << "\n";
   os << indent << "MaximumNormalAngle: " << this->Options.maximumNormalAngle << "\n";

@@ -114,6 +114,10 @@ public:
   /// Nearest points whose normal is this far or further from the template's are not used.
   virtual void SetMaximumNormalAngle(double value);
   virtual double GetMaximumNormalAngle();
+  /// Weight of the frame-to-template term (each frame vertex pulls its nearest template vertex),
+  /// as a fraction of each stage's nearest-point weight; 0: template to frame only.
+  virtual void SetCoverageWeight(double value);
+  virtual double GetCoverageWeight();
   /// Ablations: the correspondence term Ec, the nearest-point term Ed.
   virtual void SetUseCorrespondence(bool value);
   virtual bool GetUseCorrespondence();

@@ -61,6 +61,9 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "nearest-reuse", po::value(&fit.nearestReuse)->default_value(fit.nearestReuse),
       "metres: a template vertex that moved less than this since its last closest-point search "
       "is projected onto the same triangle (0: search every round)")(
+      "coverage-weight", po::value(&fit.coverageWeight)->default_value(fit.coverageWeight),
+      "template fit: weight of the frame-to-template term (each frame vertex pulls its nearest "
+      "template vertex), as a fraction of each stage's nearest-point weight (0: off)")(
       "stages", po::value(&stageSpec),
       "template fit weight stages wc,ws,wd,wt separated by '/' (default the paper's: "
       "1,400,0,0.1/1,200,10,0.1/0,100,10,0.1/0,50,10,0.1)")(
@@ -185,6 +188,8 @@ void check(const AlignSettings& s)
     throw UsageError{"--refactor-steps must be 0 or more"};
   if (!(fit.nearestReuse >= 0) || !std::isfinite(fit.nearestReuse))
     throw UsageError{"--nearest-reuse must be 0 or more"};
+  if (!(fit.coverageWeight >= 0) || !std::isfinite(fit.coverageWeight))
+    throw UsageError{"--coverage-weight must be 0 or more"};
 }
 
 const char* usageOf(AlignMode mode)
@@ -216,6 +221,7 @@ nlohmann::json AlignSettings::fitKey() const
           {"refactor_steps", fit.refactorSteps},
           {"factor_backend", factorBackend},
           {"nearest_reuse", fit.nearestReuse},
+          {"coverage_weight", fit.coverageWeight},
           {"truth_distance", truth.maximumTruthDistance},
           {"predict_radius", prediction.predictRadius},
           {"landmark_consensus", prediction.landmarkConsensus},

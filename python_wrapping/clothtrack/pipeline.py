@@ -92,7 +92,8 @@ _STAGE_KEYWORDS = {
     "correspondence": ("epsilon", "minimum_radius", "maximum_radius", "minimum_seed_consensus",
                        "minimum_shell_area", "persistence"),
     "fit": ("solver_tolerance", "intermediate_tolerance", "refactor_steps", "nearest_reuse",
-            "maximum_nearest_distance", "start_from_body", "landmark_consensus"),
+            "maximum_nearest_distance", "coverage_weight", "start_from_body",
+            "landmark_consensus"),
     "error": ("maximum_truth_distance",),
 }
 

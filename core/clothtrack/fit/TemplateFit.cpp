@@ -8,6 +8,7 @@
 #include <clothtrack/correspondence/PatchCorrespondence.h>
 #include <clothtrack/mesh/MeshTopology.h>
 #include <clothtrack/mesh/MeshValidation.h>
+#include <clothtrack/mesh/PointIndex.h>
 #include <clothtrack/mesh/SurfaceLocator.h>
 #include <clothtrack/solver/PreconditionerFactor.h>
 
@@ -33,6 +34,49 @@ namespace
 double seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+/// The frame-to-template pairs of one round: every frame vertex paired with its nearest template
+/// vertex, summed per template vertex (a vertex may be the nearest of several frame vertices).
+struct CoverageTargets
+{
+  std::vector<int> count;      ///< frame vertices paired with each template vertex
+  Points sum;                  ///< their positions, summed
+  std::vector<double> squares; ///< their squared norms, summed
+  int pairs = 0;
+};
+
+/// Pairs closer than maxDistance whose normals are less than acos(minCosine) apart.
+CoverageTargets coverageTargets(const Points& templatePositions, const Points& templateNormals,
+                                const Points& framePositions, const Points& frameNormals,
+                                double maxDistance, double minCosine)
+{
+  const int n = static_cast<int>(templatePositions.rows());
+  const int frameVertices = static_cast<int>(framePositions.rows());
+  const PointIndex index(templatePositions);
+  std::vector<int> partner(frameVertices, -1);
+  parallelFor(0, frameVertices,
+              [&](int j)
+              {
+                const Neighbour nb = index.nearest(framePositions.row(j).transpose());
+                if (nb.index < 0 || nb.distance > maxDistance) return;
+                if (templateNormals.row(nb.index).dot(frameNormals.row(j)) <= minCosine) return;
+                partner[j] = nb.index;
+              });
+  CoverageTargets t;
+  t.count.assign(n, 0);
+  t.sum = Points::Zero(n, 3);
+  t.squares.assign(n, 0.0);
+  for (int j = 0; j < frameVertices; ++j)
+  {
+    const int i = partner[j];
+    if (i < 0) continue;
+    ++t.count[i];
+    t.sum.row(i) += framePositions.row(j);
+    t.squares[i] += framePositions.row(j).squaredNorm();
+    ++t.pairs;
+  }
+  return t;
 }
 
 } // namespace
@@ -201,7 +245,8 @@ struct TemplateFitter::Impl
                      const std::vector<unsigned char>& hasCorrespondence,
                      const Points& correspondence, double correspondenceWeight,
                      const std::vector<unsigned char>& hasNearest, const Points& nearest,
-                     double nearestWeight, double smoothnessWeight, double temporalWeight) const
+                     double nearestWeight, const CoverageTargets& coverage, double coverageWeight,
+                     double smoothnessWeight, double temporalWeight) const
   {
     Quadratic q;
     q.R = Unknowns::Zero(4 * static_cast<Eigen::Index>(n), 3);
@@ -231,6 +276,13 @@ struct TemplateFitter::Impl
                     addPoint(correspondenceWeight, correspondence.row(i).transpose());
                   if (nearestWeight > 0 && hasNearest[i])
                     addPoint(nearestWeight, nearest.row(i).transpose());
+                  if (coverageWeight > 0 && coverage.count[i] > 0)
+                  {
+                    // sum_j w |A_i t_i - f_j|^2 over the frame vertices f_j paired with i.
+                    block += coverageWeight * coverage.count[i] * bi * bi.transpose();
+                    rhs += coverageWeight * bi * coverage.sum.row(i);
+                    c += coverageWeight * coverage.squares[i];
+                  }
                   q.R.middleRows<4>(4 * i) = rhs;
                   q.diagonal[i] = block;
                   constant[i] = c;
@@ -270,6 +322,8 @@ void checkOptions(const TemplateFitOptions& o)
     throw Error("Template fit: nearestReuse must be 0 or more.");
   if (!(o.correspondenceOutlier >= 0))
     throw Error("Template fit: correspondenceOutlier must be >= 0.");
+  if (!(o.coverageWeight >= 0) || !std::isfinite(o.coverageWeight))
+    throw Error("Template fit: coverageWeight must be 0 or more.");
   if (!(o.maximumNormalAngle > 0 && o.maximumNormalAngle <= 180))
     throw Error("Template fit: maximumNormalAngle must be in (0, 180] degrees.");
 }
@@ -376,6 +430,12 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
 
   const SurfaceLocator locator(frame);
   const Points frameNormals = faceNormals(frame);
+  const bool usesCoverage = options_.useNearest && options_.coverageWeight > 0;
+  const Points frameScaled =
+      usesCoverage ? Points((frame.V.rowwise() - centroid.transpose()) * scale) : Points();
+  const Points frameVertexNormals = usesCoverage ? areaWeightedVertexNormals(frame) : Points();
+  CoverageTargets coverage;
+  coverage.count.assign(n, 0);
   const double minCosine = std::cos(options_.maximumNormalAngle * M_PI / 180.0);
   std::vector<int> hint(n, -1);
   // Where each vertex was when its closest point was last searched for (nearestReuse).
@@ -472,8 +532,17 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
         result.nearestValid = findNearest(before);
         wd = result.nearestValid > 0 ? stage.nearest / result.nearestValid : 0.0;
       }
+      double wb = 0.0;
+      if (usesNearest && usesCoverage)
+      {
+        deformed.V = before;
+        coverage =
+            coverageTargets(before, areaWeightedVertexNormals(deformed), frameScaled,
+                            frameVertexNormals, options_.maximumNearestDistance * scale, minCosine);
+        wb = coverage.pairs > 0 ? stage.nearest * options_.coverageWeight / coverage.pairs : 0.0;
+      }
       const Quadratic q =
-          m.assemble(b, active, correspondence, wc, hasNearest, nearest, wd, ws, wt);
+          m.assemble(b, active, correspondence, wc, hasNearest, nearest, wd, coverage, wb, ws, wt);
       if (options_.solver == FitSolver::Exact)
         result.iterations += m.solveExact(q, X, stageIndex,
                                           round + 1 == rounds ? options_.solverTolerance

@@ -2,11 +2,14 @@
 // Template fitting (Shehu et al. 2016, section 4.3, after Allen et al. 2003): every template
 // vertex t_i gets an affine map A_i, and
 //
-//   E = wc Ec + ws Es + wd Ed + wt Et
+//   E = wc Ec + ws Es + wd (Ed + wb Eb) + wt Et
 //   Ec = 1/|C| sum_{i in C} |A_i t_i - c_i|^2      c_i: dense correspondence on the frame
 //   Ed = 1/|D| sum_{i in D} |A_i t_i - n_i|^2      n_i: closest frame point, valid when within
 //                                                   maximumNearestDistance and normals < 90 deg
 //                                                   apart
+//   Eb = 1/|B| sum_{j in B} |A_i(j) t_i(j) - f_j|^2  f_j: frame vertex, i(j) its nearest
+//                                                   template vertex (the same validity as Ed;
+//                                                   wb = coverageWeight)
 //   Es = 1/sum|N(i)| sum_i sum_{j in N(i)} |A_i - A_j|_F^2
 //   Et = 1/N sum_i |A_i - I|_F^2                    relative to the previous frame's fit
 //
@@ -78,6 +81,13 @@ struct TemplateFitOptions
   double lengthScale = 1.0;
   double maximumNearestDistance = 0.2; ///< metres
   double maximumNormalAngle = 90.0;    ///< degrees
+  /// Weight of a frame-to-template term, as a fraction of the stage's wd: in the rounds with
+  /// nearest points every frame vertex also pulls its nearest template vertex (within
+  /// maximumNearestDistance, normals within maximumNormalAngle), so that a part of the frame the
+  /// template has slid off (a foot) draws it back; Ed alone is satisfied by any template lying
+  /// on the frame. 0: template to frame only, as the paper. 0.2 halves the frames' coverage
+  /// distance and lowers the error a little (BENCHMARKS.md, "Robustness: the frame covered").
+  double coverageWeight = 0.2;
   /// A vertex that moved less than this (metres) since its last closest-point search on the
   /// frame keeps that search's triangle and is projected onto it: the point found is then at
   /// most twice this much farther than the closest one. 0 searches for every vertex in every
