@@ -46,6 +46,7 @@ ctOptionClampDefinition(ctBodyFit, OutsideTolerance, double, Options.transfer.ou
 ctOptionClampDefinition(ctBodyFit, InsideTolerance, double, Options.transfer.insideTolerance, 0.0,
                         10.0);
 ctOptionDefinition(ctBodyFit, RegisterFrames, bool, Options.registerFrames);
+ctOptionDefinition(ctBodyFit, StatureStart, bool, Options.fit.statureStart);
 
 ctBodyFit::ctBodyFit()
 {
@@ -288,4 +289,5 @@ void ctBodyFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutsideTolerance: " << this->Options.transfer.outsideTolerance << "\n";
   os << indent << "InsideTolerance: " << this->Options.transfer.insideTolerance << "\n";
   os << indent << "RegisterFrames: " << this->Options.registerFrames << "\n";
+  os << indent << "StatureStart: " << this->Options.fit.statureStart << "\n";
 }

@@ -69,6 +69,11 @@ public:
   /// Hip flexion (radians) of the raised-leg starts of the final pass; 0: none.
   virtual void SetLegRaiseStart(double value);
   virtual double GetLegRaiseStart();
+  /// Start the shape's estimation at the stature the key frames suggest (their height over
+  /// that of the body fitted with the mean shape) rather than at the mean body.
+  virtual void SetStatureStart(bool value);
+  virtual bool GetStatureStart();
+  vtkBooleanMacro(StatureStart, bool);
   /// Key frames used to estimate the shape.
   virtual void SetShapeFrames(int value);
   virtual int GetShapeFrames();

@@ -54,6 +54,9 @@ struct AlignSettings
   /// Body fit: each frame starts from its predecessor's pose moved by the rigid motion between
   /// the two surfaces (BodyStageOptions::registerFrames).
   bool registerFrames = false;
+  /// Body fit: the shape's estimation starts at the stature the frames suggest
+  /// (BodyFitOptions::statureStart).
+  bool statureStart = true;
   /// Under mpirun, each process fits the body to a segment of the sequence, tracking
   /// bodyFitOverlap frames of its neighbours' segments first (BodyFitSharing). Off: the first
   /// process fits the whole sequence, and the result is one process's bit for bit.

@@ -143,7 +143,7 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
           {"weights",
            {f.temporalWeight, f.rootTemporalWeight, f.legTemporalWeight, f.posePriorWeight,
             f.hingeStiffness, f.shapePriorWeight}},
-          {"shape", {f.shapeComponents, f.shapeFrames, f.shapeRounds}},
+          {"shape", {f.shapeComponents, f.shapeFrames, f.shapeRounds, f.statureStart}},
           {"samples", f.samples},
           {"robust_scale", f.robustScale},
           {"cover", {f.shapeCoverWeight, f.coverScale}},
@@ -180,6 +180,7 @@ void runBodyStage(Run& run, bool together)
   const fs::path cache = run.work / "landmarks.jsonl";
   BodyStageOptions options;
   options.registerFrames = s.registerFrames;
+  options.fit.statureStart = s.statureStart;
   options.keepBodyLandmarks = false; // only the seeds are used: a long sequence stays small
   run.landmarkKey = {{"files", run.input.files},  {"model", s.modelPath},
                      {"up", s.sequence.up},       {"unit", s.sequence.unit},

@@ -88,7 +88,8 @@ def _as_sequence(frames, frame_rate):
 # filter's default, which is the core's (docs/parameters.md).
 _STAGE_KEYWORDS = {
     "body": ("samples", "temporal_weight", "root_temporal_weight", "leg_temporal_weight",
-             "leg_raise_start", "outside_tolerance", "inside_tolerance", "register_frames"),
+             "leg_raise_start", "stature_start", "outside_tolerance", "inside_tolerance",
+             "register_frames"),
     "correspondence": ("epsilon", "minimum_radius", "maximum_radius", "minimum_seed_consensus",
                        "minimum_shell_area", "persistence"),
     "fit": ("solver_tolerance", "intermediate_tolerance", "refactor_steps", "nearest_reuse",

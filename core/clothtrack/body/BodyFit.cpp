@@ -7,6 +7,7 @@
 #include <clothtrack/base/Error.h>
 #include <clothtrack/base/Parallel.h>
 #include <clothtrack/mesh/Geodesic.h>
+#include <clothtrack/mesh/SubjectSize.h>
 #include <clothtrack/mesh/SurfaceGap.h>
 
 #include <algorithm>
@@ -216,11 +217,56 @@ void firstPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
   surfaces.release(last);
 }
 
+/// Height (extent along Y) of a set of points.
+double heightOf(const Points& points)
+{
+  return points.col(1).maxCoeff() - points.col(1).minCoeff();
+}
+
+/// The shape of least norm whose rest pose is `ratio` times the mean body's height (heights are
+/// near linear in beta: one finite difference per component).
+Eigen::VectorXd scaledShape(const BodyModel& model, Eigen::Index components, double ratio)
+{
+  const Eigen::VectorXd mean = Eigen::VectorXd::Zero(components);
+  Points vertices, joints;
+  model.shape(mean, vertices, joints);
+  const double meanHeight = heightOf(vertices);
+  Eigen::VectorXd gradient(components);
+  for (Eigen::Index c = 0; c < components; ++c)
+  {
+    Eigen::VectorXd unit = mean;
+    unit[c] = 1.0;
+    model.shape(unit, vertices, joints);
+    gradient[c] = heightOf(vertices) - meanHeight;
+  }
+  if (gradient.squaredNorm() < 1e-12) return mean;
+  return gradient * ((ratio - 1.0) * meanHeight / gradient.squaredNorm());
+}
+
+/// The median over the key frames of the frame's height over its fitted body's, within the
+/// heights taken as a person's (SubjectSize.h) for the mean body; 1 when none.
+double statureRatio(const BodyModel& model, const Eigen::VectorXd& beta,
+                    const std::vector<const FrameSurface*>& frames,
+                    const std::vector<BodyPose>& poses)
+{
+  std::vector<double> ratios;
+  for (size_t k = 0; k < frames.size(); ++k)
+  {
+    const double body = heightOf(model.posed(beta, poses[k]).V);
+    if (body > 0) ratios.push_back(heightOf(frames[k]->mesh->V) / body);
+  }
+  if (ratios.empty()) return 1.0;
+  std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+  const double meanHeight = heightOf(model.posed(beta, BodyPose()).V);
+  return std::clamp(ratios[ratios.size() / 2], kSmallestPerson / meanHeight,
+                    kTallestPerson / meanHeight);
+}
+
 /// Beta on key frames spread over the sequence (well-fitted ones first), alternating with
 /// their poses.
-void fitShape(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector<int>& usable,
-              const BodyFitOptions& options, const std::vector<BodyFrameFit>& fits,
-              FitProgress& progress)
+void fitShape(const BodyModel& model, SequenceFitter& fitter, FrameSurfaces& surfaces,
+              const std::vector<int>& usable, const BodyFitOptions& options,
+              const std::vector<BodyFrameFit>& fits, FitProgress& progress)
 {
   std::vector<int> candidates;
   for (int i : usable)
@@ -242,6 +288,14 @@ void fitShape(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vector
   // long in a squat).
   std::vector<BodyFitStage> refine(options.stages.end() - 1, options.stages.end());
   refine.back().coverWeight = options.shapeCoverWeight;
+  if (options.statureStart)
+  {
+    const Eigen::VectorXd& beta = fitter.samples().beta();
+    const double ratio = statureRatio(model, beta, keySurfaces, keyPoses);
+    fitter.samples().setShape(scaledShape(model, beta.size(), ratio));
+    for (size_t k = 0; k < keys.size(); ++k)
+      fitter.fitPose(*keySurfaces[k], keyPoses[k], nullptr, refine, options.extremityGate);
+  }
   for (int round = 0; round < options.shapeRounds; ++round)
   {
     fitter.fitShape(keySurfaces, keyPoses, 4);
@@ -437,7 +491,7 @@ BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
   fitter.setReachTolerance(options.shapeReachTolerance);
   firstPass(fitter, surfaces, segment.forward, options, result.frames, fitProgress);
   share();
-  fitShape(fitter, surfaces, usable, options, result.frames, fitProgress);
+  fitShape(model, fitter, surfaces, usable, options, result.frames, fitProgress);
   if (shared) shareShape(sharing, fitter);
   result.beta = fitter.samples().beta();
   fitter.setReachTolerance(options.reachTolerance);

@@ -98,9 +98,15 @@ struct BodyFitOptions
   /// person (pjump) grows to fill the torso rather than lie against one side of it. The passes
   /// over the sequence leave it at 0 (BodyFitStage::coverWeight).
   double shapeCoverWeight = 1.0;
-  int shapeComponents = 16;  ///< leading components fitted (at most the model's)
-  int shapeFrames = 8;       ///< key frames for the shape
-  int shapeRounds = 3;       ///< alternations of shape and key-frame poses
+  int shapeComponents = 16; ///< leading components fitted (at most the model's)
+  int shapeFrames = 8;      ///< key frames for the shape
+  int shapeRounds = 3;      ///< alternations of shape and key-frame poses
+  /// The shape's estimation starts from the mean body scaled, along the shape space, to the
+  /// stature the key frames suggest: the median over them of the frame's height over the height
+  /// of the body fitted to it with the mean shape (pose-independent: a squat or raised arms
+  /// change both). The alternation of shape and poses grows a body towards a tall person's
+  /// stature only slowly.
+  bool statureStart = true;
   int samples = 600;         ///< body vertices used by the dense terms
   double robustScale = 0.03; ///< Cauchy scale of E_n, metres
   /// Cauchy scale of the cover term (BodyFitStage::coverWeight), metres.
@@ -150,7 +156,7 @@ struct BodyFitOptions
 
 /// Changes whenever the fit's results change for the same options, so that results cached by an
 /// older release are not reused.
-inline constexpr int kBodyFitRevision = 6;
+inline constexpr int kBodyFitRevision = 7;
 
 enum class BodyFitStatus : int
 {
