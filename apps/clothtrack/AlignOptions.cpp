@@ -81,9 +81,9 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "register-frames", po::bool_switch(&s.registerFrames),
       "body fit: start each frame from its predecessor's pose moved by the rigid motion between "
       "the two surfaces (generalized ICP)")(
-      "no-stature-start", po::bool_switch(),
-      "body fit: estimate the shape from the mean body rather than from the stature the frames "
-      "suggest")(
+      "stature-start", po::bool_switch(&s.statureStart),
+      "body fit: start the shape's estimation at the stature the frames suggest rather than at "
+      "the mean body (for people far from 1.7 m)")(
       "split-body-fit", po::bool_switch(&s.splitBodyFit),
       "under mpirun: each process fits the body to its own segment of the sequence (faster; the "
       "result differs a little from one process's, which is otherwise kept bit for bit)")(
@@ -258,7 +258,6 @@ std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode
   s.fit.useCorrespondence = !values["no-correspondence"].as<bool>();
   s.retryDoubtful = !values["no-retry"].as<bool>();
   s.startFromBody = !values["no-body-start"].as<bool>();
-  s.statureStart = !values["no-stature-start"].as<bool>();
   s.selection.templateCriterion = parseTemplateCriterion(criterion);
   check(s);
   resolveAutomatic(s.sequence, s.input);

@@ -56,7 +56,7 @@ struct AlignSettings
   bool registerFrames = false;
   /// Body fit: the shape's estimation starts at the stature the frames suggest
   /// (BodyFitOptions::statureStart).
-  bool statureStart = true;
+  bool statureStart = false;
   /// Under mpirun, each process fits the body to a segment of the sequence, tracking
   /// bodyFitOverlap frames of its neighbours' segments first (BodyFitSharing). Off: the first
   /// process fits the whole sequence, and the result is one process's bit for bit.

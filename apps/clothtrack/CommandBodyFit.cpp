@@ -70,8 +70,9 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
       "register-frames", po::bool_switch(&s.stage.registerFrames),
       "start each frame from its predecessor's pose moved by the rigid motion between the two "
       "surfaces (generalized ICP)")(
-      "no-stature-start", po::bool_switch(),
-      "estimate the shape from the mean body rather than from the stature the frames suggest");
+      "stature-start", po::bool_switch(&fit.statureStart),
+      "start the shape's estimation at the stature the frames suggest rather than at the mean "
+      "body (for people far from 1.7 m)");
   addSequenceOptions(options, s.sequence);
   po::positional_options_description positional;
   positional.add("input", 1);
@@ -82,7 +83,6 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
   if (fit.samples < 50) throw UsageError{"--samples must be at least 50"};
   if (fit.shapeFrames < 1) throw UsageError{"--shape-frames must be at least 1"};
-  fit.statureStart = !values["no-stature-start"].as<bool>();
   resolveAutomatic(s.sequence, s.input);
   return s;
 }

@@ -212,10 +212,10 @@ TEST(BodyFit, GrowsToATallPerson)
   // suggest brings it closer.
   const Sequence captured = capturedSequence("trousers-walkloop", 6, 1.95);
   const std::vector<TriangleMesh>& captures = captured.captures;
-  BodyFitOptions options;
-  options.shapeFrames = 3;
-  BodyFitOptions fromTheMean = options;
-  fromTheMean.statureStart = false;
+  BodyFitOptions fromTheMean;
+  fromTheMean.shapeFrames = 3;
+  BodyFitOptions options = fromTheMean;
+  options.statureStart = true;
   const BodyFitResult fit = fitBodySequence(builtinBodyModel(), pointers(captures), options);
   const BodyFitResult slow = fitBodySequence(builtinBodyModel(), pointers(captures), fromTheMean);
   const double truth = restHeight(builtinBodyModel(), captured.beta);
