@@ -85,8 +85,8 @@ struct TemplateFitOptions
   /// nearest points every frame vertex also pulls its nearest template vertex (within
   /// maximumNearestDistance, normals within maximumNormalAngle), so that a part of the frame the
   /// template has slid off (a foot) draws it back; Ed alone is satisfied by any template lying
-  /// on the frame. 0: template to frame only, as the paper. 0.2 halves the frames' coverage
-  /// distance and lowers the error a little (BENCHMARKS.md, "Robustness: the frame covered").
+  /// on the frame. 0: template to frame only, as the paper. 0.2 lowers the frames' coverage
+  /// distance by 10-50 % and the error a little (BENCHMARKS.md, "Robustness: the frame covered").
   double coverageWeight = 0.2;
   /// A vertex that moved less than this (metres) since its last closest-point search on the
   /// frame keeps that search's triangle and is projected onto it: the point found is then at
