@@ -93,8 +93,9 @@ def part_errors(out, step, first, last):
             sys.exit(f"{out}: frame {k} has no Error array (run align with --ground-truth)")
         error = vtk_to_numpy(error) * scale
         for p, mask in masks.items():
-            if mask.any():
-                sums[p].append(error[mask].mean())
+            known = error[mask][np.isfinite(error[mask])]  # NaN: no ground truth near the vertex
+            if known.size:
+                sums[p].append(known.mean())
     share = {p: mask.mean() for p, mask in masks.items()}
     return share, {p: (100 * np.mean(v) if v else float("nan")) for p, v in sums.items()}
 
