@@ -152,7 +152,7 @@ TEST(TemplateFit, TheFrameToTemplateTermReachesWhatTheTemplateDoesNotCover)
               100 * bare(a.positions), 100 * bare(b.positions), 100 * meanError(a.positions, t.V),
               100 * meanError(b.positions, t.V));
   // The template is stretched over the end rather than slid back: the vertices' mean error
-  // stays 7-8 cm either way. Measured: 9.6 cm left bare one way, 3.9 cm both ways.
+  // stays about 7 cm either way. Measured: 9.6 cm left bare one way, 3.9 cm both ways.
   EXPECT_GT(bare(a.positions), 0.07) << "one way";
   EXPECT_LT(bare(b.positions), 0.6 * bare(a.positions)) << "both ways";
   EXPECT_LT(b.surfaceDistance.mean(), 0.003);

@@ -223,14 +223,16 @@ double heightOf(const Points& points)
   return points.col(1).maxCoeff() - points.col(1).minCoeff();
 }
 
-/// The shape of least norm whose rest pose is `ratio` times the mean body's height (heights are
-/// near linear in beta: one finite difference per component).
+/// The shape of least norm whose rest pose is `ratio` times the mean body's height, that height
+/// kept within a person's (SubjectSize.h); heights are near linear in beta: one finite
+/// difference per component.
 Eigen::VectorXd scaledShape(const BodyModel& model, Eigen::Index components, double ratio)
 {
   const Eigen::VectorXd mean = Eigen::VectorXd::Zero(components);
   Points vertices, joints;
   model.shape(mean, vertices, joints);
   const double meanHeight = heightOf(vertices);
+  const double target = std::clamp(ratio * meanHeight, kSmallestPerson, kTallestPerson);
   Eigen::VectorXd gradient(components);
   for (Eigen::Index c = 0; c < components; ++c)
   {
@@ -240,11 +242,10 @@ Eigen::VectorXd scaledShape(const BodyModel& model, Eigen::Index components, dou
     gradient[c] = heightOf(vertices) - meanHeight;
   }
   if (gradient.squaredNorm() < 1e-12) return mean;
-  return gradient * ((ratio - 1.0) * meanHeight / gradient.squaredNorm());
+  return gradient * ((target - meanHeight) / gradient.squaredNorm());
 }
 
-/// The median over the key frames of the frame's height over its fitted body's, within the
-/// heights taken as a person's (SubjectSize.h) for the mean body; 1 when none.
+/// The median over the key frames of the frame's height over its fitted body's; 1 when none.
 double statureRatio(const BodyModel& model, const Eigen::VectorXd& beta,
                     const std::vector<const FrameSurface*>& frames,
                     const std::vector<BodyPose>& poses)
@@ -257,9 +258,7 @@ double statureRatio(const BodyModel& model, const Eigen::VectorXd& beta,
   }
   if (ratios.empty()) return 1.0;
   std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
-  const double meanHeight = heightOf(model.posed(beta, BodyPose()).V);
-  return std::clamp(ratios[ratios.size() / 2], kSmallestPerson / meanHeight,
-                    kTallestPerson / meanHeight);
+  return ratios[ratios.size() / 2];
 }
 
 /// Beta on key frames spread over the sequence (well-fitted ones first), alternating with

@@ -458,10 +458,9 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
   };
   const double reuse2 = options_.nearestReuse * options_.nearestReuse;
   std::atomic<int> searches{0};
-  auto findNearest = [&](const Points& p)
+  // `normals`: the template's vertex normals at positions p.
+  auto findNearest = [&](const Points& p, const Points& normals)
   {
-    deformed.V = p;
-    const Points normals = areaWeightedVertexNormals(deformed);
     parallelFor(0, n,
                 [&](int i)
                 {
@@ -526,20 +525,19 @@ FrameFit TemplateFitter::fit(const Points& start, const TriangleMesh& frame,
       }
       firstRound = false;
       const double wc = activeCount > 0 ? stage.correspondence / activeCount : 0.0;
-      double wd = 0.0;
+      double wd = 0.0, wb = 0.0;
       if (usesNearest)
       {
-        result.nearestValid = findNearest(before);
-        wd = result.nearestValid > 0 ? stage.nearest / result.nearestValid : 0.0;
-      }
-      double wb = 0.0;
-      if (usesNearest && usesCoverage)
-      {
         deformed.V = before;
-        coverage =
-            coverageTargets(before, areaWeightedVertexNormals(deformed), frameScaled,
-                            frameVertexNormals, options_.maximumNearestDistance * scale, minCosine);
-        wb = coverage.pairs > 0 ? stage.nearest * options_.coverageWeight / coverage.pairs : 0.0;
+        const Points normals = areaWeightedVertexNormals(deformed);
+        result.nearestValid = findNearest(before, normals);
+        wd = result.nearestValid > 0 ? stage.nearest / result.nearestValid : 0.0;
+        if (usesCoverage)
+        {
+          coverage = coverageTargets(before, normals, frameScaled, frameVertexNormals,
+                                     options_.maximumNearestDistance * scale, minCosine);
+          wb = coverage.pairs > 0 ? stage.nearest * options_.coverageWeight / coverage.pairs : 0.0;
+        }
       }
       const Quadratic q =
           m.assemble(b, active, correspondence, wc, hasNearest, nearest, wd, coverage, wb, ws, wt);
