@@ -282,6 +282,7 @@ void addSummaryRows(vtkTable* table, const std::vector<clothtrack::FrameFit>& fi
   auto stretchColumn = namedArray<vtkDoubleArray>("Stretch", n);
   auto foldedColumn = namedArray<vtkDoubleArray>("Folded", n);
   auto bodyColumn = namedArray<vtkDoubleArray>("BodyDistance", n);
+  auto extentColumn = namedArray<vtkDoubleArray>("ExtentGap", n);
   auto confidenceColumn = namedArray<vtkDoubleArray>("Confidence", n);
   auto attemptsColumn = namedArray<vtkIntArray>("Attempts", n);
   for (int k = 0; k < n; ++k)
@@ -291,6 +292,7 @@ void addSummaryRows(vtkTable* table, const std::vector<clothtrack::FrameFit>& fi
     stretchColumn->SetValue(k, confidence[k].stretch);
     foldedColumn->SetValue(k, confidence[k].folded);
     bodyColumn->SetValue(k, confidence[k].bodyDistance >= 0 ? confidence[k].bodyDistance : NAN);
+    extentColumn->SetValue(k, confidence[k].extentGap >= 0 ? confidence[k].extentGap : NAN);
     confidenceColumn->SetValue(k, confidence[k].confidence);
     attemptsColumn->SetValue(k, fit.attempts);
     frameColumn->SetValue(k, k);
@@ -310,7 +312,7 @@ void addSummaryRows(vtkTable* table, const std::vector<clothtrack::FrameFit>& fi
         static_cast<vtkAbstractArray*>(energyColumn), static_cast<vtkAbstractArray*>(secondsColumn),
         static_cast<vtkAbstractArray*>(coverageColumn),
         static_cast<vtkAbstractArray*>(stretchColumn), static_cast<vtkAbstractArray*>(foldedColumn),
-        static_cast<vtkAbstractArray*>(bodyColumn),
+        static_cast<vtkAbstractArray*>(bodyColumn), static_cast<vtkAbstractArray*>(extentColumn),
         static_cast<vtkAbstractArray*>(confidenceColumn),
         static_cast<vtkAbstractArray*>(attemptsColumn)})
     table->AddColumn(column);

@@ -34,7 +34,8 @@
  * NearestValid, Rounds, Iterations, Energy, Seconds, and the frame's ground-truth-free
  * confidence (clothtrack/eval/FrameConfidence.h): CoverageDistance, Stretch, Folded,
  * BodyDistance (to the template posed by the frame's body from input 3; NaN without a trusted
- * body), Confidence. A doubtful frame is also a warning saying why.
+ * body), ExtentGap (lowest and highest points against that posed template's; NaN likewise),
+ * Confidence. A doubtful frame is also a warning saying why.
  *
  * A corrupt frame, a correspondence block that does not match the template or non-finite
  * input is an error naming the frame; a frame without correspondence is fitted from nearest

@@ -605,18 +605,20 @@ void addConfidenceMetrics(nlohmann::json& metrics, const SequenceQuality& qualit
                           const std::vector<std::string>& files)
 {
   std::vector<double> confidence, stretch, folded;
-  nlohmann::json bodyDistance = nlohmann::json::array();
+  nlohmann::json bodyDistance = nlohmann::json::array(), extentGap = nlohmann::json::array();
   for (const FrameConfidence& c : quality.confidence)
   {
     confidence.push_back(c.confidence);
     stretch.push_back(c.stretch);
     folded.push_back(c.folded);
     bodyDistance.push_back(c.bodyDistance >= 0 ? nlohmann::json(c.bodyDistance) : nullptr);
+    extentGap.push_back(c.extentGap >= 0 ? nlohmann::json(c.extentGap) : nullptr);
   }
   metrics["per_frame_confidence"] = confidence;
   metrics["per_frame_stretch"] = stretch;
   metrics["per_frame_folded"] = folded;
   metrics["per_frame_body_distance_m"] = bodyDistance;
+  metrics["per_frame_extent_gap_m"] = extentGap;
   nlohmann::json doubtful = nlohmann::json::array();
   for (int k : quality.doubtfulFrames)
     doubtful.push_back({{"frame", k}, {"file", files[k]}, {"doubt", quality.confidence[k].doubt}});

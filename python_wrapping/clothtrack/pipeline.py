@@ -23,9 +23,9 @@ class Alignment:
                     within_10cm, worst_frame, drift_m_per_frame, per_frame_mean_error_m (from
                     ctAlignmentError: the template frame is left out of the pooled figures, as in
                     the app); always per_frame_confidence, per_frame_coverage_distance_m,
-                    per_frame_fit_attempts, per_frame_body_distance_m (None where the frame's body
-                    is not trusted) and doubtful_frames (frames with a confidence below 1; the fit
-                    stage warns about each)
+                    per_frame_fit_attempts, per_frame_body_distance_m and per_frame_extent_gap_m
+                    (None where the frame's body is not trusted) and doubtful_frames (frames with
+                    a confidence below 1; the fit stage warns about each)
     """
 
     def __init__(self, aligned, template_frame, errors=None, frame_errors=None, fit_summary=None):
@@ -48,6 +48,7 @@ class Alignment:
             self.metrics["per_frame_coverage_distance_m"] = column("CoverageDistance")
             self.metrics["per_frame_fit_attempts"] = [int(a) for a in column("Attempts")]
             self.metrics["per_frame_body_distance_m"] = [None if np.isnan(d) else d for d in column("BodyDistance")]
+            self.metrics["per_frame_extent_gap_m"] = [None if np.isnan(d) else d for d in column("ExtentGap")]
             self.metrics["doubtful_frames"] = [k for k, c in enumerate(self.metrics["per_frame_confidence"]) if c < 1.0]
         if frame_errors is not None:  # ctAlignmentError's per-frame table and its sequence figures
             sequence = frame_errors.GetFieldData()

@@ -130,6 +130,38 @@ TEST(FrameConfidence, ATemplateSlidingAlongTheSurfaceIsSeenOnlyByTheBody)
   EXPECT_THROW(meter(slid, kSphere, -1.0, 0, &fewer), Error);
 }
 
+TEST(FrameConfidence, ABodyStandingHigherInItsFrameShowsInItsExtent)
+{
+  // A 1 m tall body whose fitted feet rose by `rise` in this frame while the template stayed on
+  // the frame (its lower half carried up the surface with them, the head where it was): the mean
+  // distance to the posed template stays under its limit, the lowest points do not.
+  Points tall = kSphere.V;
+  tall.col(1) *= 2.5;
+  const TriangleMesh body{tall, kSphere.F};
+  const ConfidenceMeter meter(body);
+  auto raised = [&](double rise)
+  {
+    Points posed = tall;
+    for (Eigen::Index v = 0; v < posed.rows(); ++v)
+      posed(v, 1) += rise * std::max(0.0, -tall(v, 1)) / 0.5;
+    return posed;
+  };
+  const Points floated = raised(0.17);
+  const FrameConfidence c = meter(tall, body, -1.0, 0, &floated);
+  EXPECT_LT(c.bodyDistance, FrameConfidenceOptions{}.maximumBodyDistance);
+  EXPECT_NEAR(c.extentGap, 0.17, 1e-9);
+  ASSERT_TRUE(c.doubtful());
+  EXPECT_EQ(c.doubt.find("body extent 17.0 cm"), 0u) << c.doubt;
+  const Points risen = raised(0.10);
+  const FrameConfidence within = meter(tall, body, -1.0, 0, &risen);
+  EXPECT_NEAR(within.extentGap, 0.10, 1e-9);
+  EXPECT_FALSE(within.doubtful()) << within.doubt;
+  // Along another up axis the same rise is sideways: the extent along it hardly changes.
+  FrameConfidenceOptions zUp;
+  zUp.up = Vec3::UnitZ();
+  EXPECT_LT(ConfidenceMeter(body, zUp)(tall, body, -1.0, 0, &floated).extentGap, 1e-9);
+}
+
 TEST(FrameConfidence, SequenceQualityJudgesFramesWithATrustedBodyByIt)
 {
   const Eigen::Matrix3d R = Eigen::AngleAxisd(M_PI / 6, Vec3::UnitZ()).toRotationMatrix();

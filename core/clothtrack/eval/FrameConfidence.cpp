@@ -122,6 +122,9 @@ void ConfidenceMeter::measureBodyDistance(const Points& aligned, const Points& p
                 std::to_string(posedByBody.rows()) + " vertices, the aligned template " +
                 std::to_string(aligned.rows()) + ".");
   confidence.bodyDistance = (aligned - posedByBody).rowwise().norm().mean();
+  const Eigen::VectorXd height = aligned * options_.up, posedHeight = posedByBody * options_.up;
+  confidence.extentGap = std::max(std::abs(height.minCoeff() - posedHeight.minCoeff()),
+                                  std::abs(height.maxCoeff() - posedHeight.maxCoeff()));
 }
 
 FrameConfidence ConfidenceMeter::operator()(const Points& aligned, const TriangleMesh& frame,
@@ -156,7 +159,8 @@ void judgeConfidence(FrameConfidence& c, const FrameConfidenceOptions& options)
       {"stretch", c.stretch, options.maximumStretch, Shown::Number},
       {"folds", c.folded, options.maximumFoldedFraction, Shown::Percent},
       {"body distance", c.bodyDistance, options.maximumBodyDistance, Shown::Centimetres,
-       c.bodyDistance >= 0}};
+       c.bodyDistance >= 0},
+      {"body extent", c.extentGap, options.maximumExtentGap, Shown::Centimetres, c.extentGap >= 0}};
   c.severity = 0.0;
   c.doubt.clear();
   for (const Measure& m : measures)

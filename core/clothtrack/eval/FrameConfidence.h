@@ -5,8 +5,9 @@
 // triangles are stretched or squeezed (cloth barely stretches), it is folded over itself (a
 // template crumpled into a sheet keeps a small surface distance, so this has to be looked at
 // separately), or it lies far from where the body fitted to the frame carries it (a template
-// sliding along the surface keeps small distances both ways). Each measure has a limit; a frame
-// past any limit is doubtful, and says why.
+// sliding along the surface keeps small distances both ways), or that body's lowest or highest
+// point is far from the template's (the body slid, and the template with it). Each measure has a
+// limit; a frame past any limit is doubtful, and says why.
 #include <clothtrack/mesh/TriangleMesh.h>
 
 #include <functional>
@@ -26,6 +27,11 @@ struct FrameConfidenceOptions
   /// sequences (a dress's swing is not the body's); the frames of the development sequences that
   /// are off by more lie above 5.8 cm (docs/confidence.md).
   double maximumBodyDistance = 0.055;
+  /// metres (FrameConfidence::extentGap). Accurate frames of the development sequences stay
+  /// under 4 cm; pjump's body, whose legs end in the boots' shafts, drifts up to 19 cm, and
+  /// its frames above 10 cm lie there (docs/confidence.md).
+  double maximumExtentGap = 0.15;
+  Vec3 up = Vec3::UnitY(); ///< the frames' up axis
 };
 
 /// The template posed by the body fitted to frame k (pipeline/BodyStartPrediction.h), or
@@ -45,6 +51,12 @@ struct FrameConfidence
   /// Mean distance from the aligned template to the template posed by the frame's fitted body,
   /// metres; negative when not measured (no trusted body).
   double bodyDistance = -1.0;
+  /// The larger of the gaps between the lowest points and between the highest points (along
+  /// FrameConfidenceOptions::up) of the aligned template and the template posed by the frame's
+  /// body, metres; negative when not measured. The template lies on the frame; a body that
+  /// stands higher or lower in the frame than it did in the template frame carries the template
+  /// along the surface with it, which bodyDistance, measured against that same body, cannot see.
+  double extentGap = -1.0;
   /// The largest measure relative to its limit: at most 1 is trusted.
   double severity = 0.0;
   /// 1 while every measure is within its limit, falling linearly to 0 at twice a limit
@@ -75,7 +87,7 @@ public:
   /// The stretch and folds alone (no frame needed): fills `stretch` and `folded`.
   void measureDistortion(const Points& aligned, FrameConfidence& confidence) const;
 
-  /// Fills `bodyDistance`: the mean distance from `aligned` to `posedByBody`.
+  /// Fills `bodyDistance`, the mean distance from `aligned` to `posedByBody`, and `extentGap`.
   void measureBodyDistance(const Points& aligned, const Points& posedByBody,
                            FrameConfidence& confidence) const;
 

@@ -13,7 +13,7 @@ namespace clothtrack
 namespace
 {
 /// Bumped with any change of the layout of encodeSequenceQuality.
-constexpr std::uint32_t kQualityLayout = 0x43545131; // "CTQ1"
+constexpr std::uint32_t kQualityLayout = 0x43545132; // "CTQ2"
 
 double mean(const std::vector<double>& values)
 {
@@ -136,7 +136,7 @@ std::string encodeSequenceQuality(const SequenceQuality& q, int from, int to)
     if (q.confidence.empty()) continue;
     const FrameConfidence& c = q.confidence[k];
     for (double v : {c.surfaceDistance, c.coverageDistance, c.stretch, c.folded, c.bodyDistance,
-                     c.severity, c.confidence})
+                     c.extentGap, c.severity, c.confidence})
       w.put(v);
     w.putText(c.doubt);
   }
@@ -169,7 +169,7 @@ SequenceQuality joinSequenceQuality(const std::vector<std::string>& parts, int f
       if (!judged) continue;
       FrameConfidence& c = q.confidence[k];
       for (double* v : {&c.surfaceDistance, &c.coverageDistance, &c.stretch, &c.folded,
-                        &c.bodyDistance, &c.severity, &c.confidence})
+                        &c.bodyDistance, &c.extentGap, &c.severity, &c.confidence})
         *v = r.get<double>();
       c.doubt = r.getText();
     }
