@@ -378,7 +378,11 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
       posed = posedByBody(sequence, bodies, templateMesh, j);
     }
     if (posed && this->StartFromBody)
-      hooks.start = bodyStartPrediction(posed, std::move(hooks.start));
+      hooks.start = bodyStartPrediction(
+          posed, std::move(hooks.start),
+          this->StretchStartToFrame
+              ? std::function<FramePtr(int)>([&](int k) { return borrowedFrame(frames[k]); })
+              : nullptr);
     if (this->RetryDoubtfulFrames) judgeFits(hooks, templateMesh, {}, posed);
     hooks.progress = [this](double done)
     {
@@ -431,4 +435,5 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PredictRadius: " << this->Prediction.predictRadius << "\n";
   os << indent << "LandmarkConsensus: " << this->Prediction.landmarkConsensus << "\n";
   os << indent << "StartFromBody: " << this->StartFromBody << "\n";
+  os << indent << "StretchStartToFrame: " << this->StretchStartToFrame << "\n";
 }

@@ -143,6 +143,12 @@ public:
   vtkGetMacro(StartFromBody, bool);
   vtkBooleanMacro(StartFromBody, bool);
 
+  /// With StartFromBody: the posed template is first stretched along Y to the frame's lowest
+  /// and highest points (clothtrack::stretchToFrameExtent). Default on.
+  vtkSetMacro(StretchStartToFrame, bool);
+  vtkGetMacro(StretchStartToFrame, bool);
+  vtkBooleanMacro(StretchStartToFrame, bool);
+
   /// A frame whose fit is clearly doubtful (clothtrack/pipeline/FitJudge.h) is fitted again
   /// from other starts and the most confident fit kept (default on).
   vtkSetMacro(RetryDoubtfulFrames, bool);
@@ -171,6 +177,7 @@ private:
   int NumberOfThreads = 0;
   bool RetryDoubtfulFrames = true;
   bool StartFromBody = true;
+  bool StretchStartToFrame = true;
   clothtrack::TemplateFitOptions Options;
   clothtrack::StartPredictionOptions Prediction;
 };

@@ -78,6 +78,9 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "no-body-start", po::bool_switch(),
       "start each frame's fit from its neighbour's (moved as --predict-radius says) rather than "
       "from the template posed by the body fitted to the frame")(
+      "no-start-stretch", po::bool_switch(),
+      "start each frame from the template posed by its body as it is, rather than stretched "
+      "along the up axis to the frame's lowest and highest points")(
       "register-frames", po::bool_switch(&s.registerFrames),
       "body fit: start each frame from its predecessor's pose moved by the rigid motion between "
       "the two surfaces (generalized ICP)")(
@@ -229,6 +232,7 @@ nlohmann::json AlignSettings::fitKey() const
           {"predict_radius", prediction.predictRadius},
           {"landmark_consensus", prediction.landmarkConsensus},
           {"body_start", startFromBody},
+          {"start_stretch", stretchStart},
           {"skinning_revision", kSkinnedTemplateRevision},
           {"use_correspondence", fit.useCorrespondence},
           {"retry_doubtful", retryDoubtful},
@@ -258,6 +262,7 @@ std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode
   s.fit.useCorrespondence = !values["no-correspondence"].as<bool>();
   s.retryDoubtful = !values["no-retry"].as<bool>();
   s.startFromBody = !values["no-body-start"].as<bool>();
+  s.stretchStart = !values["no-start-stretch"].as<bool>();
   s.selection.templateCriterion = parseTemplateCriterion(criterion);
   check(s);
   resolveAutomatic(s.sequence, s.input);

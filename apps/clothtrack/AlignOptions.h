@@ -49,6 +49,9 @@ struct AlignSettings
   /// (pipeline/BodyStartPrediction.h); frames with a doubtful body fit start from the landmark
   /// prediction.
   bool startFromBody = true;
+  /// The template posed by a frame's body is first stretched to the frame's height
+  /// (stretchToFrameExtent in pipeline/BodyStartPrediction.h).
+  bool stretchStart = true;
   /// A frame whose fit is clearly doubtful is fitted again from other starts (FitJudge.h).
   bool retryDoubtful = true;
   /// Body fit: each frame starts from its predecessor's pose moved by the rigid motion between

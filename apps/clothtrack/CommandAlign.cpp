@@ -510,7 +510,10 @@ void addInputHooks(Run& run, SequenceFitHooks& hooks, VertexTargets& targets)
         bodyPosedTemplate(bodyModel(s.modelPath, ownModel), run.body.body, run.templateMesh(), j);
   }
   if (s.startFromBody && run.posedByBody)
-    hooks.start = bodyStartPrediction(run.posedByBody, std::move(hooks.start));
+    hooks.start = bodyStartPrediction(
+        run.posedByBody, std::move(hooks.start),
+        s.stretchStart ? std::function<FramePtr(int)>([r](int k) { return r->input.frame(k); })
+                       : nullptr);
   if (s.retryDoubtful) judgeFits(hooks, run.templateMesh(), {}, run.posedByBody);
 }
 

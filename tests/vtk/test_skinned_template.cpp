@@ -179,3 +179,35 @@ TEST(BodyStartPrediction, FramesWithADoubtfulBodyStartFromTheFallback)
       model(), body, templ, 0, [&](int, int, const Points&) { return fallbackStart; });
   EXPECT_EQ(fallback(1, 0, templ.V), fallbackStart);
 }
+
+TEST(BodyStartPrediction, TheStartIsStretchedToItsFramesHeight)
+{
+  BodyFitResult body;
+  body.beta = Eigen::VectorXd::Zero(4);
+  body.frames.resize(2);
+  body.frames[1].pose = stepPose();
+  const TriangleMesh templ = model().posed(body.beta, BodyPose());
+  const TemplatePosedByBody posed = bodyPosedTemplate(model(), body, templ, 0);
+  const Points posedStart = *posed(1);
+  // Frame 1: the posed body itself, 10 % taller and standing 5 cm higher: a body fitted short
+  // in it, its feet above the frame's.
+  auto frame = std::make_shared<TriangleMesh>(model().posed(body.beta, stepPose()));
+  const double low = frame->V.col(1).minCoeff();
+  frame->V.col(1) = ((frame->V.col(1).array() - low) * 1.1 + low + 0.05).matrix();
+  const StartPrediction stretched =
+      bodyStartPrediction(posed, {}, [&](int) -> FramePtr { return frame; });
+  const Points start = stretched(1, 0, templ.V);
+  EXPECT_NEAR(start.col(1).minCoeff(), frame->V.col(1).minCoeff(), 1e-9);
+  EXPECT_NEAR(start.col(1).maxCoeff(), frame->V.col(1).maxCoeff(), 1e-9);
+  EXPECT_LT((start - frame->V).rowwise().norm().mean(), 0.005); // the same surface points
+  EXPECT_EQ(start.leftCols(1), posedStart.leftCols(1));         // only heights change
+  EXPECT_EQ(start.rightCols(1), posedStart.rightCols(1));
+  // Without frames, or where the heights differ by more than a fifth, the start is the posed
+  // template as it is.
+  EXPECT_EQ(bodyStartPrediction(posed, {})(1, 0, templ.V), posedStart);
+  frame->V.col(1) *= 1.3;
+  EXPECT_EQ(stretched(1, 0, templ.V), posedStart);
+  Points unchanged = posedStart;
+  EXPECT_FALSE(stretchToFrameExtent(unchanged, *frame));
+  EXPECT_EQ(unchanged, posedStart);
+}

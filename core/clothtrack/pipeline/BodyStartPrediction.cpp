@@ -2,6 +2,7 @@
 
 #include <clothtrack/base/Error.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -55,14 +56,33 @@ TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResul
   return bodyPosedTemplate(templateMesh, templateFrame, fittedBodies(model, body, templateFrame));
 }
 
-StartPrediction bodyStartPrediction(TemplatePosedByBody posed, StartPrediction fallback)
+StartPrediction bodyStartPrediction(TemplatePosedByBody posed, StartPrediction fallback,
+                                    std::function<FramePtr(int)> frames)
 {
-  return [posed = std::move(posed),
-          fallback = std::move(fallback)](int k, int from, const Points& fitOfFrom) -> Points
+  return [posed = std::move(posed), fallback = std::move(fallback),
+          frames = std::move(frames)](int k, int from, const Points& fitOfFrom) -> Points
   {
-    if (std::optional<Points> start = posed(k)) return std::move(*start);
+    if (std::optional<Points> start = posed(k))
+    {
+      if (frames)
+        if (const FramePtr frame = frames(k)) stretchToFrameExtent(*start, *frame);
+      return std::move(*start);
+    }
     return fallback ? fallback(k, from, fitOfFrom) : fitOfFrom;
   };
+}
+
+bool stretchToFrameExtent(Points& start, const TriangleMesh& frame, const Vec3& up)
+{
+  if (start.rows() == 0 || frame.V.rows() == 0) return false;
+  const Eigen::VectorXd height = start * up, frameHeight = frame.V * up;
+  const double low = height.minCoeff(), span = height.maxCoeff() - low;
+  const double frameLow = frameHeight.minCoeff(), frameSpan = frameHeight.maxCoeff() - frameLow;
+  if (!(span > 0) || !(std::abs(frameSpan / span - 1.0) <= kLargestExtentStretch)) return false;
+  const Eigen::VectorXd shift =
+      ((height.array() - low) * (frameSpan / span - 1.0) + (frameLow - low)).matrix();
+  start += shift * up.transpose();
+  return true;
 }
 
 StartPrediction bodyStartPrediction(const TriangleMesh& templateMesh, int templateFrame,

@@ -7,6 +7,7 @@
 #include <clothtrack/eval/FrameConfidence.h>
 #include <clothtrack/fit/SequenceFit.h>
 
+#include <functional>
 #include <vector>
 
 namespace clothtrack
@@ -34,8 +35,23 @@ TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResul
                                       const TriangleMesh& templateMesh, int templateFrame);
 
 /// The start of frame k: the template posed by frame k's body. Frames without one start from
-/// `fallback` (which may be empty: the neighbour's fit as it is).
-StartPrediction bodyStartPrediction(TemplatePosedByBody posed, StartPrediction fallback);
+/// `fallback` (which may be empty: the neighbour's fit as it is). With `frames`, each posed
+/// template is first stretched to its frame's extent (stretchToFrameExtent).
+StartPrediction bodyStartPrediction(TemplatePosedByBody posed, StartPrediction fallback,
+                                    std::function<FramePtr(int)> frames = {});
+
+/// Largest relative change of height stretchToFrameExtent makes; beyond it the start is left as
+/// it is (a frame missing its feet, or a stray fragment of the floor, is not a body that slid).
+inline constexpr double kLargestExtentStretch = 0.2;
+
+/// Moves and scales `start` along `up` (a unit vector) so that its lowest and highest points
+/// meet the frame's. The template lies on the template frame; where the body fitted to another
+/// frame stands higher or lower in it than the template frame's body did (feet that end inside
+/// boots, and hang lower in one frame than in the next), the posed template is carried up or
+/// down the surface with it, and the fit, whose data terms cannot see a slide along the
+/// surface, keeps it (pjump: 4.26 to 4.06 cm, docs/template-fit.md). Returns false, the start
+/// unchanged, where the height would change by more than kLargestExtentStretch.
+bool stretchToFrameExtent(Points& start, const TriangleMesh& frame, const Vec3& up = Vec3::UnitY());
 
 /// bodyStartPrediction(bodyPosedTemplate(templateMesh, templateFrame, bodies), fallback); when
 /// the template frame's body is not trusted, `fallback` itself is returned.
