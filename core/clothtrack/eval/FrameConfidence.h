@@ -29,7 +29,7 @@ struct FrameConfidenceOptions
   double maximumBodyDistance = 0.055;
   /// metres (FrameConfidence::extentGap). Accurate frames of the development sequences stay
   /// under 4 cm; pjump's body, whose legs end in the boots' shafts, drifts up to 19 cm, and
-  /// its frames above 10 cm lie there (docs/confidence.md).
+  /// 4 of its 6 frames above 10 cm with --stature-start lie beyond 15 cm (docs/confidence.md).
   double maximumExtentGap = 0.15;
   Vec3 up = Vec3::UnitY(); ///< the frames' up axis
 };
