@@ -47,6 +47,7 @@ ctOptionClampDefinition(ctBodyFit, InsideTolerance, double, Options.transfer.ins
                         10.0);
 ctOptionDefinition(ctBodyFit, RegisterFrames, bool, Options.registerFrames);
 ctOptionDefinition(ctBodyFit, StatureStart, bool, Options.fit.statureStart);
+ctOptionDefinition(ctBodyFit, LimbRestarts, bool, Options.fit.limbRestarts);
 
 ctBodyFit::ctBodyFit()
 {
@@ -290,4 +291,5 @@ void ctBodyFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InsideTolerance: " << this->Options.transfer.insideTolerance << "\n";
   os << indent << "RegisterFrames: " << this->Options.registerFrames << "\n";
   os << indent << "StatureStart: " << this->Options.fit.statureStart << "\n";
+  os << indent << "LimbRestarts: " << this->Options.fit.limbRestarts << "\n";
 }

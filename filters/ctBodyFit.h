@@ -74,6 +74,11 @@ public:
   virtual void SetStatureStart(bool value);
   virtual bool GetStatureStart();
   vtkBooleanMacro(StatureStart, bool);
+  /// Start frames unrelated to their predecessor again with their limbs at rest and aimed at
+  /// the extremities their fit leaves unpaired (on by default).
+  virtual void SetLimbRestarts(bool value);
+  virtual bool GetLimbRestarts();
+  vtkBooleanMacro(LimbRestarts, bool);
   /// Key frames used to estimate the shape.
   virtual void SetShapeFrames(int value);
   virtual int GetShapeFrames();

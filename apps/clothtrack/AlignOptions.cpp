@@ -87,6 +87,9 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "stature-start", po::bool_switch(&s.statureStart),
       "body fit: start the shape's estimation at the stature the frames suggest rather than at "
       "the mean body (for people far from 1.7 m)")(
+      "no-limb-restarts", po::bool_switch(),
+      "body fit: do not start frames unrelated to their predecessor again with their limbs at "
+      "rest and aimed at the extremities their fit leaves unpaired")(
       "split-body-fit", po::bool_switch(&s.splitBodyFit),
       "under mpirun: each process fits the body to its own segment of the sequence (faster; the "
       "result differs a little from one process's, which is otherwise kept bit for bit)")(
@@ -263,6 +266,7 @@ std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode
   s.retryDoubtful = !values["no-retry"].as<bool>();
   s.startFromBody = !values["no-body-start"].as<bool>();
   s.stretchStart = !values["no-start-stretch"].as<bool>();
+  s.limbRestarts = !values["no-limb-restarts"].as<bool>();
   s.selection.templateCriterion = parseTemplateCriterion(criterion);
   check(s);
   resolveAutomatic(s.sequence, s.input);

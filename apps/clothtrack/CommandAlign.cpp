@@ -152,6 +152,7 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
             f.shapeReachTolerance}},
           {"headings", {f.headings, f.headingAmbiguity}},
           {"leg_raise", f.legRaiseStart},
+          {"limb_restarts", f.limbRestarts},
           {"judge", {f.poorDistance, f.insideTolerance, f.poorInside}},
           {"continuity", {f.neighbourGap, f.unexplainedRatio, f.unexplainedMargin}},
           {"transfer", {o.transfer.outsideTolerance, o.transfer.insideTolerance}},
@@ -181,6 +182,7 @@ void runBodyStage(Run& run, bool together)
   BodyStageOptions options;
   options.registerFrames = s.registerFrames;
   options.fit.statureStart = s.statureStart;
+  options.fit.limbRestarts = s.limbRestarts;
   options.keepBodyLandmarks = false; // only the seeds are used: a long sequence stays small
   run.landmarkKey = {{"files", run.input.files},  {"model", s.modelPath},
                      {"up", s.sequence.up},       {"unit", s.sequence.unit},

@@ -72,7 +72,10 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
       "surfaces (generalized ICP)")(
       "stature-start", po::bool_switch(&fit.statureStart),
       "start the shape's estimation at the stature the frames suggest rather than at the mean "
-      "body (for people far from 1.7 m)");
+      "body (for people far from 1.7 m)")(
+      "no-limb-restarts", po::bool_switch(),
+      "do not start frames unrelated to their predecessor again with their limbs at rest and "
+      "aimed at the extremities their fit leaves unpaired");
   addSequenceOptions(options, s.sequence);
   po::positional_options_description positional;
   positional.add("input", 1);
@@ -80,6 +83,7 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
   if (!parseOptions(args, "clothtrack body-fit INPUT -o OUT [options]", options, positional,
                     values))
     return std::nullopt;
+  fit.limbRestarts = !values["no-limb-restarts"].as<bool>();
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
   if (fit.samples < 50) throw UsageError{"--samples must be at least 50"};
   if (fit.shapeFrames < 1) throw UsageError{"--shape-frames must be at least 1"};

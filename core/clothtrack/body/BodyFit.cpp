@@ -203,7 +203,11 @@ void firstPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
                      : fits[last].pose;
       surfaces.release(last);
       fitter.fitFrame(s, init, continuous ? &init : nullptr, options.stages, fit, continuous);
-      if (!continuous) fitter.refitFromPoses(s, okPoses(usable, i, fits), fit);
+      if (!continuous)
+      {
+        fitter.refitFromPoses(s, okPoses(usable, i, fits), fit);
+        if (options.limbRestarts) fitter.refitLimbs(s, fit);
+      }
       fit.previousGap = gap;
       fit.continuesPrevious = continuous;
     }
@@ -345,6 +349,7 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
       fitter.refitFromNeighbour(surfaces.get(i), *previous, finalStages, fit,
                                 /*coverAsMuch=*/false);
     tryRaisedLegs(fitter, surfaces.get(i), finalStages, options.legRaiseStart, fit);
+    if (!fit.continuesPrevious && options.limbRestarts) fitter.refitLimbs(surfaces.get(i), fit);
     if (fit.status == BodyFitStatus::Poor && fit.message.empty()) fit.message = "poor fit";
     previous = &fit.pose;
     surfaces.release(i);

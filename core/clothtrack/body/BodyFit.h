@@ -130,6 +130,13 @@ struct BodyFitOptions
   /// trousers still lies inside the cloth, so the dense terms do not lift it towards a raised
   /// knee. 0: off.
   double legRaiseStart = 0.6;
+  /// A frame that does not continue its predecessor (neighbourGap) is also started again, in the
+  /// first and the final pass, with each limb back in the rest pose and with each limb aimed at
+  /// a detected extremity its fit leaves unpaired; a start is kept where it explains the frame
+  /// better both ways. Extremities are paired by proximity, so limbs that crossed to the other
+  /// side's hand or foot stay crossed, and a leg kicked out lies beyond the pairing gate of a
+  /// foot hanging down (BENCHMARKS.md, "collections of unrelated poses: limbs started again").
+  bool limbRestarts = true;
   int headings = 8; ///< headings tried when (re)initialising
   /// First-frame fits facing more than 90 degrees apart whose scores are within this factor are
   /// told apart by the pose prior (front and back look alike under loose clothing).

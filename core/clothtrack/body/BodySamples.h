@@ -99,6 +99,12 @@ public:
     return roots;
   }
 
+  /// World transforms of the joints in `pose`.
+  std::vector<Eigen::Matrix4d> jointTransforms(const BodyPose& pose) const
+  {
+    return jointWorldTransforms(joints_, pose);
+  }
+
   /// Posed points when beta_k moves by `step` (normals not needed by the Jacobian).
   Points poseWithShapeStep(const BodyPose& pose, int k, double step) const
   {

@@ -528,11 +528,19 @@ public:
         best = pose;
       }
     }
-    BodyFrameFit other;
-    other.pose = best;
-    other.energy = fitPose(frame, other.pose, nullptr, options_.stages, options_.extremityGate,
-                           &other.extremitiesMatched);
-    if (twoSidedScore(frame, other.pose) < twoSidedScore(frame, fit.pose)) adopt(frame, other, fit);
+    refitFrom(frame, best, fit);
+  }
+
+  /// A frame that no neighbour vouches for, started again from its own fit with each limb (each
+  /// arm, both arms, each leg) put back in the rest pose, then with each limb aimed at a
+  /// detected extremity that the fit leaves unpaired; each start is fitted fully without a
+  /// temporal prior and kept if it explains the frame better by twoSidedScore. Extremities are
+  /// paired by proximity, so a fit whose arms crossed to the other side's hands keeps them
+  /// crossed, and a leg kicked out lies beyond the pairing gate of a foot hanging down.
+  void refitLimbs(const FrameSurface& frame, BodyFrameFit& fit)
+  {
+    refitWithLimbsAtRest(frame, fit);
+    refitWithLimbsAimed(frame, fit);
   }
 
   /// Gauss-Newton steps on beta with the key frames' poses fixed.
@@ -603,6 +611,92 @@ public:
   }
 
 private:
+  /// A limb: the extremity label it ends in (BodyFitPose.h), its root joint and the joints
+  /// below the root (an arm has two: its wrist is listed twice).
+  struct Limb
+  {
+    int extremity;
+    Joint root;
+    std::array<Joint, 3> below;
+  };
+  static constexpr std::array<Limb, 4> kLimbs = {
+      {{1, LeftShoulder, {LeftElbow, LeftWrist, LeftWrist}},
+       {2, RightShoulder, {RightElbow, RightWrist, RightWrist}},
+       {3, LeftHip, {LeftKnee, LeftAnkle, LeftToe}},
+       {4, RightHip, {RightKnee, RightAnkle, RightToe}}}};
+
+  /// `start` fitted fully without a temporal prior; replaces `fit` if it explains the frame
+  /// better by twoSidedScore.
+  void refitFrom(const FrameSurface& frame, const BodyPose& start, BodyFrameFit& fit)
+  {
+    BodyFrameFit other;
+    other.pose = start;
+    other.energy = fitPose(frame, other.pose, nullptr, options_.stages, options_.extremityGate,
+                           &other.extremitiesMatched);
+    if (twoSidedScore(frame, other.pose) < twoSidedScore(frame, fit.pose)) adopt(frame, other, fit);
+  }
+
+  void refitWithLimbsAtRest(const FrameSurface& frame, BodyFrameFit& fit)
+  {
+    // Each arm with its clavicle, both arms together (crossed arms swap both), each leg.
+    const std::array<std::vector<int>, 5> groups = {{{0}, {1}, {0, 1}, {2}, {3}}};
+    for (const std::vector<int>& group : groups)
+    {
+      BodyPose start = fit.pose;
+      for (int l : group)
+      {
+        const Limb& limb = kLimbs[l];
+        start.rotations.row(limb.root).setZero();
+        for (Joint j : limb.below) start.rotations.row(j).setZero();
+        if (l < 2) start.rotations.row(jointParents()[limb.root]).setZero(); // the clavicle
+      }
+      refitFrom(frame, start, fit);
+    }
+  }
+
+  void refitWithLimbsAimed(const FrameSurface& frame, BodyFrameFit& fit)
+  {
+    std::array<int, kNumExtremities> match;
+    matchExtremities(samples_.pose(fit.pose), samples_, samples_.extremityRoots(fit.pose),
+                     frame.extremities, options_.extremityGate, options_.handGate, reachTolerance_,
+                     match);
+    for (size_t d = 0; d < frame.extremities.size(); ++d)
+    {
+      if (std::find(match.begin(), match.end(), static_cast<int>(d)) != match.end()) continue;
+      for (const Limb& limb : kLimbs)
+      {
+        BodyPose start = fit.pose;
+        if (aimLimb(limb, frame.extremities[d], start)) refitFrom(frame, start, fit);
+      }
+    }
+  }
+
+  /// Straightens `limb` below its root and turns the root so that the limb points at
+  /// `target`; false when the target is out of the limb's reach.
+  bool aimLimb(const Limb& limb, const Vec3& target, BodyPose& pose) const
+  {
+    for (Joint j : limb.below) pose.rotations.row(j).setZero();
+    const std::vector<Eigen::Matrix4d> world = samples_.jointTransforms(pose);
+    const Vec3 origin = world[limb.root].topRightCorner<3, 1>();
+    if ((target - origin).norm() > kAimReach * samples_.reach()[limb.extremity] + 0.03)
+      return false;
+    const Vec3 tip = samples_.pose(pose).row(samples_.extremityPoint(limb.extremity)).transpose();
+    // The root's world rotation is its parent's times its own: turn = P R' (P R)^-1.
+    const Eigen::Matrix3d turn =
+        Eigen::Quaterniond::FromTwoVectors(tip - origin, target - origin).toRotationMatrix();
+    const Eigen::Matrix3d parent = world[jointParents()[limb.root]].topLeftCorner<3, 3>();
+    const Eigen::Matrix3d own = axisAngleToMatrix(pose.rotations.row(limb.root).transpose());
+    pose.rotations.row(limb.root) =
+        matrixToAxisAngle(parent.transpose() * turn * parent * own).transpose();
+    // A leg aimed backwards lets a body facing the wrong way reach a foot kicked forward.
+    return limb.extremity < 3 || pose.rotations(limb.root, 0) <= kLargestHipExtension;
+  }
+  /// Hip extension (radians, a positive rotation about X) beyond which a leg is not aimed.
+  static constexpr double kLargestHipExtension = 0.6;
+  /// A limb is aimed only at a detection within this multiple of its length (plus 3 cm, as
+  /// matchExtremities allows) from its root.
+  static constexpr double kAimReach = 1.2;
+
   const BodyFitOptions& options_;
   BodySamples samples_;
   Eigen::VectorXd priorWeights_; ///< per rotation parameter
