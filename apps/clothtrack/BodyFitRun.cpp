@@ -89,7 +89,7 @@ BodyFrameFit bodyFrameFit(const nlohmann::json& record)
   return fit;
 }
 
-void warnAboutDiscontinuities(const BodyFitResult& body, double limit)
+void warnAboutDiscontinuities(const BodyFitResult& body, const BodyFitOptions& options)
 {
   std::vector<int> frames;
   for (size_t k = 0; k < body.frames.size(); ++k)
@@ -101,9 +101,10 @@ void warnAboutDiscontinuities(const BodyFitResult& body, double limit)
   if (frames.size() > 8) list += ", ...";
   std::fprintf(stderr,
                "warning: %zu of %zu frames lie more than %.0f cm from the frame before them "
-               "(%s): each was also fitted from the poses of earlier frames "
+               "(%s): each was also fitted from the poses of earlier frames%s "
                "(body_fit.json: previous_gap_m)\n",
-               frames.size(), body.frames.size(), 100.0 * limit, list.c_str());
+               frames.size(), body.frames.size(), 100.0 * options.neighbourGap, list.c_str(),
+               options.limbRestarts ? ", and with its limbs started again" : "");
 }
 
 void warnAboutPoorFits(const BodyFitResult& body, const std::vector<std::string>& files)

@@ -25,9 +25,9 @@ nlohmann::json bodyFrameJson(const std::string& file, const BodyFrameFit& fit);
 /// The fit such a record describes (status, pose, message and the figures above, where
 /// present); throws std::exception when it is not one.
 BodyFrameFit bodyFrameFit(const nlohmann::json& record);
-/// Warns when frames do not continue the frame before them (BodyFitOptions::neighbourGap, in
-/// metres as `limit`): a cut, a gap in the capture, or a collection of unrelated poses.
-void warnAboutDiscontinuities(const BodyFitResult& body, double limit);
+/// Warns when frames do not continue the frame before them (BodyFitOptions::neighbourGap): a
+/// cut, a gap in the capture, or a collection of unrelated poses; says how they were fitted.
+void warnAboutDiscontinuities(const BodyFitResult& body, const BodyFitOptions& options);
 /// Warns about each frame the body model does not fit (status poor or failed), naming its file
 /// and why: a frame that is not a person, or a person the model cannot follow there. Its
 /// landmarks, and so its correspondences, are doubtful.

@@ -238,7 +238,7 @@ void runBodyStage(Run& run, bool together)
   }
   if (!ranks::leader()) return; // the leader writes and warns for all
   writeBodyFitJson((run.out / "body_fit.json").string(), s.modelPath, run.input.files, run.body);
-  warnAboutDiscontinuities(run.body.body, options.fit.neighbourGap);
+  warnAboutDiscontinuities(run.body.body, options.fit);
   warnAboutPoorFits(run.body.body, run.input.files);
   for (int k = 0; k < n; ++k)
     if (run.landmarks.count(k) == 0)

@@ -230,7 +230,7 @@ int runBodyFit(const Args& args)
   }
   const BodyFitResult& result = stage.body;
   const double fitSeconds = secondsSince(fitStart);
-  warnAboutDiscontinuities(result, s.stage.fit.neighbourGap);
+  warnAboutDiscontinuities(result, s.stage.fit);
   warnAboutPoorFits(result, files);
 
   fs::create_directories(s.output);
