@@ -378,11 +378,15 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
       posed = posedByBody(sequence, bodies, templateMesh, j);
     }
     if (posed && this->StartFromBody)
-      hooks.start = bodyStartPrediction(
-          posed, std::move(hooks.start),
+    {
+      const std::function<FramePtr(int)> stretchTo =
           this->StretchStartToFrame
               ? std::function<FramePtr(int)>([&](int k) { return borrowedFrame(frames[k]); })
-              : nullptr);
+              : nullptr;
+      hooks.start = bodyStartPrediction(posed, std::move(hooks.start), stretchTo);
+      hooks.narrowTargets =
+          targetsAgreeingWithBodyStart(posed, stretchTo, this->CorrespondenceGate);
+    }
     if (this->RetryDoubtfulFrames) judgeFits(hooks, templateMesh, {}, posed);
     hooks.progress = [this](double done)
     {
@@ -436,4 +440,5 @@ void ctTemplateFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LandmarkConsensus: " << this->Prediction.landmarkConsensus << "\n";
   os << indent << "StartFromBody: " << this->StartFromBody << "\n";
   os << indent << "StretchStartToFrame: " << this->StretchStartToFrame << "\n";
+  os << indent << "CorrespondenceGate: " << this->CorrespondenceGate << "\n";
 }

@@ -48,6 +48,7 @@
 
 #include <clothtrack/fit/MotionPrediction.h>
 #include <clothtrack/fit/TemplateFit.h>
+#include <clothtrack/pipeline/BodyStartPrediction.h>
 
 #include <vtkMultiBlockDataSetAlgorithm.h>
 
@@ -149,6 +150,11 @@ public:
   vtkGetMacro(StretchStartToFrame, bool);
   vtkBooleanMacro(StretchStartToFrame, bool);
 
+  /// With StartFromBody: correspondences further than this (metres) from the template posed by
+  /// the frame's body are dropped (clothtrack::targetsAgreeingWithBodyStart); 0 keeps them all.
+  vtkSetClampMacro(CorrespondenceGate, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(CorrespondenceGate, double);
+
   /// A frame whose fit is clearly doubtful (clothtrack/pipeline/FitJudge.h) is fitted again
   /// from other starts and the most confident fit kept (default on).
   vtkSetMacro(RetryDoubtfulFrames, bool);
@@ -178,6 +184,7 @@ private:
   bool RetryDoubtfulFrames = true;
   bool StartFromBody = true;
   bool StretchStartToFrame = true;
+  double CorrespondenceGate = clothtrack::kDefaultCorrespondenceGate;
   clothtrack::TemplateFitOptions Options;
   clothtrack::StartPredictionOptions Prediction;
 };

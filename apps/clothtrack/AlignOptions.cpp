@@ -81,6 +81,9 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "no-start-stretch", po::bool_switch(),
       "start each frame from the template posed by its body as it is, rather than stretched "
       "along the up axis to the frame's lowest and highest points")(
+      "correspondence-gate", po::value(&s.correspondenceGate)->default_value(s.correspondenceGate),
+      "drop correspondences further than this from the template posed by the frame's body (m; "
+      "0 keeps them all)")(
       "register-frames", po::bool_switch(&s.registerFrames),
       "body fit: start each frame from its predecessor's pose moved by the rigid motion between "
       "the two surfaces (generalized ICP)")(
@@ -188,6 +191,7 @@ void check(const AlignSettings& s)
   if (!(s.truth.maximumTruthDistance > 0))
     throw UsageError{"--maximum-truth-distance must be positive"};
   if (!(s.prediction.predictRadius >= 0)) throw UsageError{"--predict-radius must be 0 or more"};
+  if (!(s.correspondenceGate >= 0)) throw UsageError{"--correspondence-gate must be 0 or more (m)"};
   if (!(s.prediction.landmarkConsensus >= 0))
     throw UsageError{"--landmark-consensus must be 0 or more"};
   if (!(fit.solverTolerance > 0 && fit.solverTolerance < 1) ||
@@ -236,6 +240,7 @@ nlohmann::json AlignSettings::fitKey() const
           {"landmark_consensus", prediction.landmarkConsensus},
           {"body_start", startFromBody},
           {"start_stretch", stretchStart},
+          {"correspondence_gate", correspondenceGate},
           {"skinning_revision", kSkinnedTemplateRevision},
           {"use_correspondence", fit.useCorrespondence},
           {"retry_doubtful", retryDoubtful},

@@ -8,6 +8,7 @@
 #include <clothtrack/eval/AlignmentError.h>
 #include <clothtrack/fit/MotionPrediction.h>
 #include <clothtrack/fit/TemplateFit.h>
+#include <clothtrack/pipeline/BodyStartPrediction.h>
 #include <clothtrack/reconstruction/SurfaceReconstruction.h>
 #include <clothtrack/selection/TemplateSelection.h>
 
@@ -52,6 +53,9 @@ struct AlignSettings
   /// The template posed by a frame's body is first stretched to the frame's height
   /// (stretchToFrameExtent in pipeline/BodyStartPrediction.h).
   bool stretchStart = true;
+  /// Correspondences further than this from the body's start are dropped (metres; 0 keeps them
+  /// all; targetsAgreeingWithBodyStart in pipeline/BodyStartPrediction.h).
+  double correspondenceGate = kDefaultCorrespondenceGate;
   /// A frame whose fit is clearly doubtful is fitted again from other starts (FitJudge.h).
   bool retryDoubtful = true;
   /// Body fit: each frame starts from its predecessor's pose moved by the rigid motion between

@@ -512,10 +512,14 @@ void addInputHooks(Run& run, SequenceFitHooks& hooks, VertexTargets& targets)
         bodyPosedTemplate(bodyModel(s.modelPath, ownModel), run.body.body, run.templateMesh(), j);
   }
   if (s.startFromBody && run.posedByBody)
-    hooks.start = bodyStartPrediction(
-        run.posedByBody, std::move(hooks.start),
+  {
+    const std::function<FramePtr(int)> frames =
         s.stretchStart ? std::function<FramePtr(int)>([r](int k) { return r->input.frame(k); })
-                       : nullptr);
+                       : nullptr;
+    hooks.start = bodyStartPrediction(run.posedByBody, std::move(hooks.start), frames);
+    hooks.narrowTargets =
+        targetsAgreeingWithBodyStart(run.posedByBody, frames, s.correspondenceGate);
+  }
   if (s.retryDoubtful) judgeFits(hooks, run.templateMesh(), {}, run.posedByBody);
 }
 

@@ -95,7 +95,7 @@ _STAGE_KEYWORDS = {
                        "minimum_shell_area", "persistence"),
     "fit": ("solver_tolerance", "intermediate_tolerance", "refactor_steps", "nearest_reuse",
             "maximum_nearest_distance", "coverage_weight", "start_from_body",
-            "stretch_start_to_frame", "landmark_consensus"),
+            "stretch_start_to_frame", "correspondence_gate", "landmark_consensus"),
     "error": ("maximum_truth_distance",),
 }
 

@@ -211,3 +211,45 @@ TEST(BodyStartPrediction, TheStartIsStretchedToItsFramesHeight)
   EXPECT_FALSE(stretchToFrameExtent(unchanged, *frame));
   EXPECT_EQ(unchanged, posedStart);
 }
+
+TEST(BodyStartPrediction, CorrespondencesTheBodyContradictsAreDropped)
+{
+  BodyFitResult body;
+  body.beta = Eigen::VectorXd::Zero(4);
+  body.frames.resize(3);
+  body.frames[1].pose = stepPose();
+  body.frames[2].status = BodyFitStatus::Poor;
+  const TriangleMesh templ = model().posed(body.beta, BodyPose());
+  const TemplatePosedByBody posed = bodyPosedTemplate(model(), body, templ, 0);
+  const Points posedStart = *posed(1);
+  // Every target where the body puts its vertex, but every third slid 8 cm down the surface
+  // and every seventh 3 cm.
+  VertexTargets targets;
+  targets.position = posedStart;
+  targets.matched.assign(templ.numVertices(), 1);
+  int slid = 0, kept = 0;
+  for (int i = 0; i < templ.numVertices(); ++i)
+  {
+    if (i % 3 == 0)
+      targets.position(i, 1) -= 0.08, ++slid;
+    else if (i % 7 == 0)
+      targets.position(i, 1) -= 0.03;
+    if (i % 5 == 0)
+      targets.matched[i] = 0; // never matched
+    else if (i % 3 != 0)
+      ++kept;
+  }
+  const auto narrow = targetsAgreeingWithBodyStart(posed, {}, 0.05);
+  ASSERT_TRUE(narrow);
+  const VertexTargets one = narrow(1, targets);
+  EXPECT_EQ(one.count(), kept);
+  EXPECT_GT(slid, 0);
+  for (int i = 0; i < templ.numVertices(); ++i)
+    EXPECT_EQ(one.matched[i], i % 5 != 0 && i % 3 != 0) << i;
+  EXPECT_EQ(one.position, targets.position);
+  // A frame without a trusted body keeps its targets; a gate of 0 narrows nothing; a negative
+  // gate is refused.
+  EXPECT_EQ(narrow(2, targets).count(), targets.count());
+  EXPECT_FALSE(targetsAgreeingWithBodyStart(posed, {}, 0.0));
+  EXPECT_THROW(targetsAgreeingWithBodyStart(posed, {}, -1.0), Error);
+}

@@ -56,19 +56,44 @@ TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResul
   return bodyPosedTemplate(templateMesh, templateFrame, fittedBodies(model, body, templateFrame));
 }
 
+std::optional<Points> bodyPosedStart(const TemplatePosedByBody& posed,
+                                     const std::function<FramePtr(int)>& frames, int k)
+{
+  std::optional<Points> start = posed(k);
+  if (start && frames)
+    if (const FramePtr frame = frames(k)) stretchToFrameExtent(*start, *frame);
+  return start;
+}
+
 StartPrediction bodyStartPrediction(TemplatePosedByBody posed, StartPrediction fallback,
                                     std::function<FramePtr(int)> frames)
 {
   return [posed = std::move(posed), fallback = std::move(fallback),
           frames = std::move(frames)](int k, int from, const Points& fitOfFrom) -> Points
   {
-    if (std::optional<Points> start = posed(k))
-    {
-      if (frames)
-        if (const FramePtr frame = frames(k)) stretchToFrameExtent(*start, *frame);
-      return std::move(*start);
-    }
+    if (std::optional<Points> start = bodyPosedStart(posed, frames, k)) return std::move(*start);
     return fallback ? fallback(k, from, fitOfFrom) : fitOfFrom;
+  };
+}
+
+std::function<VertexTargets(int, const VertexTargets&)>
+targetsAgreeingWithBodyStart(TemplatePosedByBody posed, std::function<FramePtr(int)> frames,
+                             double gate)
+{
+  if (!(gate >= 0)) throw Error("body start: the correspondence gate must be >= 0");
+  if (!posed || gate == 0) return {};
+  return [posed = std::move(posed), frames = std::move(frames),
+          gate](int k, const VertexTargets& all) -> VertexTargets
+  {
+    const std::optional<Points> start = bodyPosedStart(posed, frames, k);
+    if (!start || start->rows() != all.position.rows() ||
+        static_cast<Eigen::Index>(all.matched.size()) != start->rows())
+      return all; // no body to judge by, or a mismatch the fit itself names
+    VertexTargets kept = all;
+    for (Eigen::Index i = 0; i < start->rows(); ++i)
+      if (kept.matched[i] && (kept.position.row(i) - start->row(i)).norm() > gate)
+        kept.matched[i] = 0;
+    return kept;
   };
 }
 

@@ -8,6 +8,7 @@
 #include <clothtrack/fit/SequenceFit.h>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace clothtrack
@@ -39,6 +40,27 @@ TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResul
 /// template is first stretched to its frame's extent (stretchToFrameExtent).
 StartPrediction bodyStartPrediction(TemplatePosedByBody posed, StartPrediction fallback,
                                     std::function<FramePtr(int)> frames = {});
+
+/// The start bodyStartPrediction gives frame k when its body is trusted: the template posed by
+/// the frame's body, stretched to the frame's extent when `frames` is given; nullopt otherwise.
+std::optional<Points> bodyPosedStart(const TemplatePosedByBody& posed,
+                                     const std::function<FramePtr(int)>& frames, int k);
+
+/// Default gate of targetsAgreeingWithBodyStart (metres; BENCHMARKS.md, "Robustness:
+/// correspondences the body contradicts").
+inline constexpr double kDefaultCorrespondenceGate = 0.05;
+
+/// Correspondences the frame's body contradicts, left out of the fit from its start (the hook
+/// SequenceFitHooks::narrowTargets). For a frame the body starts (bodyPosedStart), a template
+/// vertex's target further than `gate` from where that start puts the vertex is dropped; the
+/// other frames' targets pass as they are. The patches are seeded by landmarks carried from the
+/// same bodies, but a patch that grows along a boot shaft or across a limb pulls a whole region
+/// the wrong way, and the fit's nearest points cannot see a slide along the surface (pjump: the
+/// first stage slid the shins 8 cm down the boots, docs/template-fit.md). An empty function
+/// when there is nothing to narrow (no bodies, or a gate of 0). Throws Error for a negative gate.
+std::function<VertexTargets(int k, const VertexTargets& all)>
+targetsAgreeingWithBodyStart(TemplatePosedByBody posed, std::function<FramePtr(int)> frames,
+                             double gate);
 
 /// Largest relative change of height stretchToFrameExtent makes; beyond it the start is left as
 /// it is (a frame missing its feet, or a stray fragment of the floor, is not a body that slid).
