@@ -384,8 +384,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
               ? std::function<FramePtr(int)>([&](int k) { return borrowedFrame(frames[k]); })
               : nullptr;
       hooks.start = bodyStartPrediction(posed, std::move(hooks.start), stretchTo);
-      hooks.narrowTargets =
-          targetsAgreeingWithBodyStart(posed, stretchTo, this->CorrespondenceGate);
+      narrowTargetsToBodyStart(hooks, posed, stretchTo, this->CorrespondenceGate);
     }
     if (this->RetryDoubtfulFrames) judgeFits(hooks, templateMesh, {}, posed);
     hooks.progress = [this](double done)

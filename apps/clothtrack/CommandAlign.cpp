@@ -517,8 +517,7 @@ void addInputHooks(Run& run, SequenceFitHooks& hooks, VertexTargets& targets)
         s.stretchStart ? std::function<FramePtr(int)>([r](int k) { return r->input.frame(k); })
                        : nullptr;
     hooks.start = bodyStartPrediction(run.posedByBody, std::move(hooks.start), frames);
-    hooks.narrowTargets =
-        targetsAgreeingWithBodyStart(run.posedByBody, frames, s.correspondenceGate);
+    narrowTargetsToBodyStart(hooks, run.posedByBody, frames, s.correspondenceGate);
   }
   if (s.retryDoubtful) judgeFits(hooks, run.templateMesh(), {}, run.posedByBody);
 }

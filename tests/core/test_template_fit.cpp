@@ -242,48 +242,6 @@ TEST(TemplateFit, ADoubtfulFrameIsFittedAgainFromOtherStarts)
   EXPECT_GT(barred[2].doubt, 1.0);
 }
 
-TEST(TemplateFit, NarrowedCorrespondencesServeTheStartAndAllOfThemTheRetries)
-{
-  // As above: frame 2's start is thrown half a metre off. Every frame has correspondences; the
-  // narrowing drops them all, so the fits from the starts use none.
-  const TriangleMesh t = limb();
-  std::vector<TriangleMesh> frames;
-  std::vector<VertexTargets> targets;
-  for (int k = 0; k < 4; ++k)
-  {
-    frames.push_back(moved(t, 0.0, Vec3(0.05 * k, 0.0, 0.0)));
-    targets.push_back(everyNth(frames.back(), 4));
-  }
-  SequenceFitHooks hooks;
-  hooks.frame = [&](int k) { return borrowedFrame(frames[k]); };
-  hooks.targets = [&](int k) { return &targets[k]; };
-  hooks.start = [](int k, int, const Points& fit) -> Points
-  {
-    Points start = fit;
-    if (k == 2) start.col(0).array() += 0.5;
-    return start;
-  };
-  int narrowed = 0;
-  hooks.narrowTargets = [&](int, const VertexTargets& all)
-  {
-    ++narrowed;
-    VertexTargets none = all;
-    std::fill(none.matched.begin(), none.matched.end(), 0);
-    return none;
-  };
-  auto used = [](const FrameFit& fit) { return std::count(fit.used.begin(), fit.used.end(), 1); };
-  const auto fits = fitTemplateSequence(frames[0], 0, 4, hooks);
-  EXPECT_EQ(narrowed, 3);
-  for (int k = 1; k < 4; ++k) EXPECT_EQ(used(fits[k]), 0) << k;
-  // The retry of frame 2 from its neighbour's fit has every correspondence again.
-  hooks.judge = [&](int, const TriangleMesh&, const FrameFit& fit)
-  { return fit.surfaceDistance.mean() / 0.01; };
-  const auto retried = fitTemplateSequence(frames[0], 0, 4, hooks);
-  EXPECT_EQ(retried[2].recovery, "the neighbour's fit as start");
-  EXPECT_EQ(used(retried[2]), targets[2].count());
-  EXPECT_EQ(used(retried[1]), 0);
-}
-
 TEST(TemplateFit, LengthScaleIsTheUnitOfTheEnergy)
 {
   // The same scene a tenth the size, with lengths multiplied by 10 in the energy (and the

@@ -252,4 +252,14 @@ TEST(BodyStartPrediction, CorrespondencesTheBodyContradictsAreDropped)
   EXPECT_EQ(narrow(2, targets).count(), targets.count());
   EXPECT_FALSE(targetsAgreeingWithBodyStart(posed, {}, 0.0));
   EXPECT_THROW(targetsAgreeingWithBodyStart(posed, {}, -1.0), Error);
+  // The sequence fit's hook, narrowed for every fit of the frame.
+  SequenceFitHooks hooks;
+  hooks.targets = [&](int) -> const VertexTargets* { return &targets; };
+  narrowTargetsToBodyStart(hooks, posed, {}, 0.05);
+  EXPECT_EQ(hooks.targets(1)->count(), kept);
+  EXPECT_EQ(hooks.targets(2)->count(), targets.count());
+  SequenceFitHooks untouched;
+  untouched.targets = [&](int) -> const VertexTargets* { return &targets; };
+  narrowTargetsToBodyStart(untouched, posed, {}, 0.0);
+  EXPECT_EQ(untouched.targets(1), &targets);
 }

@@ -47,7 +47,6 @@ struct Chains
   {
     FramePtr frame;
     std::optional<VertexTargets> targets;
-    std::optional<VertexTargets> startTargets; ///< narrowed to the start's (narrowTargets)
     Points start;
     Points neighbour; ///< the neighbour's fit, when the start was predicted from it
   };
@@ -58,7 +57,7 @@ struct Chains
   {
     const ThreadBudget budget(std::max(1, threads / runningChains.load()));
     const VertexTargets* targets = in.targets ? &*in.targets : nullptr;
-    FrameFit best = fitter.fit(in.start, *in.frame, in.startTargets ? &*in.startTargets : targets);
+    FrameFit best = fitter.fit(in.start, *in.frame, targets);
     if (!hooks.judge) return best;
     best.doubt = hooks.judge(k, *in.frame, best);
     struct Alternative
@@ -154,8 +153,6 @@ struct Chains
           if (!in.frame) throw Error("Frame " + std::to_string(k) + ": no frame to fit.");
           if (hooks.targets)
             if (const VertexTargets* t = hooks.targets(k)) in.targets = *t;
-          if (in.targets && hooks.narrowTargets)
-            in.startTargets = hooks.narrowTargets(k, *in.targets);
           in.start = hooks.start ? hooks.start(k, previous, fits[previous].positions)
                                  : fits[previous].positions;
           if (hooks.start && hooks.judge) in.neighbour = fits[previous].positions;

@@ -46,11 +46,6 @@ struct SequenceFitHooks
   std::function<const VertexTargets*(int k)> targets;
   /// The start of frame k; by default the neighbour's fit as it is.
   StartPrediction start;
-  /// Narrows frame k's correspondences to those its start agrees with (e.g.
-  /// targetsAgreeingWithBodyStart, pipeline/BodyStartPrediction.h): the fit from the start uses
-  /// what it returns, a retry from another start (see `judge`) all of them. None: all of them
-  /// everywhere.
-  std::function<VertexTargets(int k, const VertexTargets& all)> narrowTargets;
   /// Frame k's fit from an earlier run (positions at least), which is kept instead of fitting
   /// the frame (resuming an interrupted run); nullopt to fit it.
   std::function<std::optional<FrameFit>(int k)> resumed;

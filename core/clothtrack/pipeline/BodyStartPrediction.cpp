@@ -97,6 +97,22 @@ targetsAgreeingWithBodyStart(TemplatePosedByBody posed, std::function<FramePtr(i
   };
 }
 
+void narrowTargetsToBodyStart(SequenceFitHooks& hooks, TemplatePosedByBody posed,
+                              std::function<FramePtr(int)> frames, double gate)
+{
+  auto narrow = targetsAgreeingWithBodyStart(std::move(posed), std::move(frames), gate);
+  if (!narrow || !hooks.targets) return;
+  auto kept = std::make_shared<VertexTargets>();
+  hooks.targets = [all = std::move(hooks.targets), narrow = std::move(narrow),
+                   kept](int k) -> const VertexTargets*
+  {
+    const VertexTargets* targets = all(k);
+    if (!targets) return nullptr;
+    *kept = narrow(k, *targets);
+    return kept.get();
+  };
+}
+
 bool stretchToFrameExtent(Points& start, const TriangleMesh& frame, const Vec3& up)
 {
   if (start.rows() == 0 || frame.V.rows() == 0) return false;

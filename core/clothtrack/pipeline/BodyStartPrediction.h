@@ -50,17 +50,23 @@ std::optional<Points> bodyPosedStart(const TemplatePosedByBody& posed,
 /// correspondences the body contradicts").
 inline constexpr double kDefaultCorrespondenceGate = 0.05;
 
-/// Correspondences the frame's body contradicts, left out of the fit from its start (the hook
-/// SequenceFitHooks::narrowTargets). For a frame the body starts (bodyPosedStart), a template
-/// vertex's target further than `gate` from where that start puts the vertex is dropped; the
-/// other frames' targets pass as they are. The patches are seeded by landmarks carried from the
-/// same bodies, but a patch that grows along a boot shaft or across a limb pulls a whole region
-/// the wrong way, and the fit's nearest points cannot see a slide along the surface (pjump: the
-/// first stage slid the shins 8 cm down the boots, docs/template-fit.md). An empty function
-/// when there is nothing to narrow (no bodies, or a gate of 0). Throws Error for a negative gate.
+/// Correspondences the frame's body contradicts. For a frame the body starts (bodyPosedStart), a
+/// template vertex's target further than `gate` from where that start puts the vertex is
+/// dropped; the other frames' targets pass as they are. The patches are seeded by landmarks
+/// carried from the same bodies, but a patch that grows along a boot shaft or across a limb
+/// pulls a whole region the wrong way, and the fit's nearest points cannot see a slide along the
+/// surface (pjump: the first stage slid the shins 9 cm down the boots, docs/template-fit.md).
+/// An empty function when there is nothing to narrow (no bodies, or a gate of 0). Throws Error
+/// for a negative gate.
 std::function<VertexTargets(int k, const VertexTargets& all)>
 targetsAgreeingWithBodyStart(TemplatePosedByBody posed, std::function<FramePtr(int)> frames,
                              double gate);
+
+/// Narrows `hooks.targets` by targetsAgreeingWithBodyStart, for every fit of the frame (a retry
+/// from another start with all of them kept fits pjump worse, docs/template-fit.md). The new
+/// hook keeps one buffer, as the hooks' contract allows (one call at a time, copied at once).
+void narrowTargetsToBodyStart(SequenceFitHooks& hooks, TemplatePosedByBody posed,
+                              std::function<FramePtr(int)> frames, double gate);
 
 /// Largest relative change of height stretchToFrameExtent makes; beyond it the start is left as
 /// it is (a frame missing its feet, or a stray fragment of the floor, is not a body that slid).
