@@ -75,7 +75,7 @@ SPLIT_TOLERANCE_M = 0.005
 def compare_split(mpiexec, app, work):
     """One process against two that each fit the body to half of a 48-frame sequence. The
     template follows the body alone (no correspondences), which shows the body fit's difference
-    undiluted and at a third of the cost."""
+    undiluted and at 70 % of the cost."""
     synth = os.path.join(work, "synth48")
     subprocess.run([app, "synth", "--preset", "shirt-armraise", "--frames", "48", "--seed", "5",
                     "-o", synth], check=True, stdout=subprocess.DEVNULL)
