@@ -214,6 +214,12 @@ void runBodyStage(Run& run, bool together)
   }
   else
   {
+    // Without these landmarks the work folder has no correspondences either: say so before the
+    // long fit, not after it.
+    if (s.mode == AlignMode::FitOnly && s.fit.useCorrespondence)
+      throw UsageError{cache.string() +
+                       ": no body fit for these frames and options (run 'clothtrack correspond' "
+                       "with the same input, options and work folder first)"};
     BodyModel ownModel;
     const BodyModel& model = bodyModel(s.modelPath, ownModel);
     Progress progress("body-fit", n);
@@ -248,15 +254,20 @@ void runBodyStage(Run& run, bool together)
                    run.input.files[k].c_str());
 }
 
+/// A template set by --template names one of the frames read; checked before the body fit.
+void checkForcedTemplate(const Run& run)
+{
+  const int j = run.settings.forcedTemplate;
+  if (j >= run.input.count())
+    throw UsageError{"--template " + std::to_string(j) +
+                     " is out of range: " + std::to_string(run.input.count()) + " frames"};
+}
+
 /// Stage 2a.
 void runTemplateStage(Run& run)
 {
   const AlignSettings& s = run.settings;
-  const int n = run.input.count();
-  run.templateFrame = s.forcedTemplate;
-  if (run.templateFrame >= n)
-    throw UsageError{"--template " + std::to_string(run.templateFrame) +
-                     " is out of range: " + std::to_string(n) + " frames"};
+  run.templateFrame = s.forcedTemplate; // in range (checkForcedTemplate)
   if (run.templateFrame < 0)
   {
     const TemplateSelection chosen =
@@ -809,6 +820,7 @@ void readAndFitBodies(Run& run)
   const fs::path copies = leader ? run.work : run.work / ("rank_" + std::to_string(ranks::rank()));
   if (!leader) removeLeftoverParts({copies});
   timed(run, "read", [&] { run.input = readInput(run.settings, copies); });
+  checkForcedTemplate(run);
   fs::create_directories(run.work);
   fs::create_directories(run.out);
   if (leader) removeLeftoverParts({run.out, run.work});

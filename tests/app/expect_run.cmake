@@ -1,7 +1,9 @@
 # expect_run(CODE TEXT ARGS...): runs ${APP} ARGS, checks the exit code and that TEXT is in the
-# output; for a failure, that the last stderr line is the error and names it.
+# output; for a failure, that the last stderr line is the error and names it. The output is left
+# in `last_output`.
 function(expect_run expected_code expected_text)
   execute_process(COMMAND ${APP} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+  set(last_output "${out}${err}" PARENT_SCOPE)
   if (NOT code STREQUAL "${expected_code}")
     message(FATAL_ERROR "clothtrack ${ARGN}: exit ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
   endif ()
@@ -17,5 +19,14 @@ function(expect_run expected_code expected_text)
     if (pos EQUAL -1 OR NOT last_line MATCHES "^clothtrack")
       message(FATAL_ERROR "clothtrack ${ARGN}: last stderr line is not the error:\n${err}")
     endif ()
+  endif ()
+endfunction()
+
+# expect_early_error(TEXT ARGS...): as expect_run(1 TEXT ARGS...), and the error came before the
+# body fit started (no "body-fit:" progress line): a wrong argument costs no fitting time.
+function(expect_early_error expected_text)
+  expect_run(1 "${expected_text}" ${ARGN})
+  if (last_output MATCHES "body-fit:")
+    message(FATAL_ERROR "clothtrack ${ARGN}: the error came after the body fit:\n${last_output}")
   endif ()
 endfunction()
