@@ -30,6 +30,7 @@
 #include <vtkTable.h>
 
 #include <memory>
+#include <utility>
 
 vtkStandardNewMacro(ctBodyFit);
 
@@ -121,7 +122,7 @@ vtkSmartPointer<vtkPolyData> fittedBodyPolyData(const clothtrack::BodyModel& mod
   using namespace clothtrack;
   const BodyFrameFit& f = fit.frames[k];
   Points joints;
-  vtkSmartPointer<vtkPolyData> bodyData = toPolyData(model.posed(fit.beta, f.pose, &joints));
+  vtkSmartPointer<vtkPolyData> bodyData = toPolyData(model.posed(fit.betaOf(k), f.pose, &joints));
   addBodyModelArrays(model, joints, bodyData);
   vtkFieldData* fd = bodyData->GetFieldData();
   clothtrack::addFieldValue(fd, clothtrack::arrays::FrameIndex, k);
@@ -137,6 +138,7 @@ vtkSmartPointer<vtkPolyData> fittedBodyPolyData(const clothtrack::BodyModel& mod
   clothtrack::addFieldValue(fd, "InsideFraction", f.insideFraction);
   clothtrack::addFieldValue(fd, "FrameDistance", f.frameDistance);
   clothtrack::addFieldValue(fd, "PreviousGap", f.previousGap);
+  clothtrack::addFieldValue(fd, "MovedShape", static_cast<int>(f.movedShape));
   return bodyData;
 }
 
@@ -233,10 +235,14 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
     auto* landmarks = vtkMultiBlockDataSet::GetData(outputVector, 1);
     bodies->SetNumberOfBlocks(n);
     landmarks->SetNumberOfBlocks(n);
-    vtkNew<vtkDoubleArray> beta;
-    beta->SetName("ShapeCoefficients");
-    for (Eigen::Index k = 0; k < fit.beta.size(); ++k) beta->InsertNextValue(fit.beta[k]);
-    bodies->GetFieldData()->AddArray(beta);
+    for (const auto& [name, coefficients] :
+         {std::pair{"ShapeCoefficients", &fit.beta}, {"MovedShapeCoefficients", &fit.movedBeta}})
+    {
+      vtkNew<vtkDoubleArray> beta;
+      beta->SetName(name);
+      for (double b : *coefficients) beta->InsertNextValue(b);
+      bodies->GetFieldData()->AddArray(beta);
+    }
     StatusTable table;
     const std::vector<double> restPoses = restPoseDistances(fit);
     for (int k = 0; k < n; ++k)

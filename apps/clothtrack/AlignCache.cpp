@@ -34,9 +34,9 @@ template <class T> bool get(std::istream& in, T& value)
 void writeBodyFitJson(const std::string& path, const std::string& modelPath,
                       const std::vector<std::string>& files, const BodyStage& stage)
 {
-  const Eigen::VectorXd& beta = stage.body.beta;
-  const nlohmann::json head = {
-      {"model", modelPath}, {"beta", std::vector<double>(beta.data(), beta.data() + beta.size())}};
+  const nlohmann::json head = {{"model", modelPath},
+                               {"beta", coefficientsJson(stage.body.beta)},
+                               {"moved_beta", coefficientsJson(stage.body.movedBeta)}};
   std::string text = head.dump(1);
   text.pop_back(); // the closing brace: the frames follow
   AtomicTextFile file(path);
@@ -50,10 +50,10 @@ void writeBodyFitJson(const std::string& path, const std::string& modelPath,
 void writeBodyStage(const std::string& path, const nlohmann::json& key,
                     const std::vector<std::string>& files, BodyStage& stage)
 {
-  const Eigen::VectorXd& beta = stage.body.beta;
   AtomicTextFile file(path);
   file << nlohmann::json({{"key", key},
-                          {"beta", std::vector<double>(beta.data(), beta.data() + beta.size())},
+                          {"beta", coefficientsJson(stage.body.beta)},
+                          {"moved_beta", coefficientsJson(stage.body.movedBeta)},
                           {"frames", stage.landmarks.size()}})
               .dump()
        << "\n";
@@ -83,9 +83,8 @@ std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::
     const nlohmann::json head = nlohmann::json::parse(line);
     if (head.at("key") != key) return std::nullopt;
     BodyStage out;
-    const std::vector<double> beta = head.at("beta").get<std::vector<double>>();
-    out.body.beta =
-        Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
+    out.body.beta = coefficients(head.at("beta"));
+    out.body.movedBeta = coefficients(head.at("moved_beta"));
     const auto frames = head.at("frames").get<size_t>();
     auto offset = static_cast<std::int64_t>(in.tellg());
     while (out.lineOffsets.size() < frames && std::getline(in, line))

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -52,7 +53,8 @@ nlohmann::json bodyFrameJson(const std::string& file, const BodyFrameFit& fit)
       {"rest_pose_distance", std::isnan(fromRest) ? nlohmann::json() : nlohmann::json(fromRest)},
       {"frame_distance_m", fit.frameDistance},
       {"previous_gap_m", fit.previousGap},
-      {"continues_previous", fit.continuesPrevious}};
+      {"continues_previous", fit.continuesPrevious},
+      {"moved_shape", fit.movedShape}};
 }
 
 namespace
@@ -86,7 +88,19 @@ BodyFrameFit bodyFrameFit(const nlohmann::json& record)
   fit.frameDistance = record.value("frame_distance_m", 0.0);
   fit.previousGap = record.value("previous_gap_m", 0.0);
   fit.continuesPrevious = record.value("continues_previous", true);
+  fit.movedShape = record.value("moved_shape", false);
   return fit;
+}
+
+nlohmann::json coefficientsJson(const Eigen::VectorXd& beta)
+{
+  return std::vector<double>(beta.data(), beta.data() + beta.size());
+}
+
+Eigen::VectorXd coefficients(const nlohmann::json& values)
+{
+  const std::vector<double> beta = values.get<std::vector<double>>();
+  return Eigen::Map<const Eigen::VectorXd>(beta.data(), static_cast<Eigen::Index>(beta.size()));
 }
 
 void warnAboutDiscontinuities(const BodyFitResult& body, const BodyFitOptions& options)

@@ -20,11 +20,15 @@ BodyFitResult fitBodiesWithProgress(const BodyModel& model,
 
 /// One frame of a body_fit.json ('clothtrack body-fit', 'clothtrack align'): file, status name,
 /// joint rotations, translation, rest_pose_distance (null unless the fit is ok),
-/// frame_distance_m, previous_gap_m and continues_previous.
+/// frame_distance_m, previous_gap_m, continues_previous and moved_shape (fitted under the
+/// moved_beta shape, BodyFitResult::movedBeta).
 nlohmann::json bodyFrameJson(const std::string& file, const BodyFrameFit& fit);
 /// The fit such a record describes (status, pose, message and the figures above, where
 /// present); throws std::exception when it is not one.
 BodyFrameFit bodyFrameFit(const nlohmann::json& record);
+/// Shape coefficients as a JSON array, and back (throws std::exception when not an array).
+nlohmann::json coefficientsJson(const Eigen::VectorXd& beta);
+Eigen::VectorXd coefficients(const nlohmann::json& values);
 /// Warns when frames do not continue the frame before them (BodyFitOptions::neighbourGap): a
 /// cut, a gap in the capture, or a collection of unrelated poses; says how they were fitted.
 void warnAboutDiscontinuities(const BodyFitResult& body, const BodyFitOptions& options);

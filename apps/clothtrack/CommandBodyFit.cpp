@@ -145,7 +145,7 @@ BodyFitTotals writeFrames(const BodyFitSettings& s, const BodyModel& model,
       [&](int k)
       {
         const BodyFrameFit& f = result.frames[k];
-        bodies[k] = model.posed(result.beta, f.pose, &bodyJoints[k]);
+        bodies[k] = model.posed(result.betaOf(k), f.pose, &bodyJoints[k]);
         if (frames[k] && f.status != BodyFitStatus::Failed)
           insideFractions[k] = fractionInside(SurfaceLocator(*frames[k]), bodies[k].V);
       },
@@ -238,17 +238,17 @@ int runBodyFit(const Args& args)
   const double foundFraction =
       totals.landmarks ? static_cast<double>(totals.landmarksFound) / totals.landmarks : 0.0;
   const double insideFraction = n ? totals.insideSum / n : 0.0;
-  nlohmann::json summary = {
-      {"frames", n},
-      {"beta", std::vector<double>(result.beta.data(), result.beta.data() + result.beta.size())},
-      {"landmarks_found_fraction", foundFraction},
-      {"body_inside_fraction", insideFraction},
-      {"seconds_total", secondsSince(start)},
-      {"seconds_read", readSeconds},
-      {"seconds_fit", fitSeconds},
-      {"seconds_per_frame", n ? fitSeconds / n : 0.0},
-      {"threads", threadCount()},
-      {"per_frame", totals.frames}};
+  nlohmann::json summary = {{"frames", n},
+                            {"beta", coefficientsJson(result.beta)},
+                            {"moved_beta", coefficientsJson(result.movedBeta)},
+                            {"landmarks_found_fraction", foundFraction},
+                            {"body_inside_fraction", insideFraction},
+                            {"seconds_total", secondsSince(start)},
+                            {"seconds_read", readSeconds},
+                            {"seconds_fit", fitSeconds},
+                            {"seconds_per_frame", n ? fitSeconds / n : 0.0},
+                            {"threads", threadCount()},
+                            {"per_frame", totals.frames}};
   writeTextAtomically((fs::path(s.output) / "body_fit.json").string(), summary.dump(2) + "\n");
   int ok = 0;
   for (const auto& f : result.frames) ok += f.status == BodyFitStatus::Ok;

@@ -265,20 +265,53 @@ double statureRatio(const BodyModel& model, const Eigen::VectorXd& beta,
   return ratios[ratios.size() / 2];
 }
 
-/// Beta on key frames spread over the sequence (well-fitted ones first), alternating with
-/// their poses.
-void fitShape(const BodyModel& model, SequenceFitter& fitter, FrameSurfaces& surfaces,
-              const std::vector<int>& usable, const BodyFitOptions& options,
-              const std::vector<BodyFrameFit>& fits, FitProgress& progress)
+/// `count` frames spread over the sequence, well-fitted ones first, the k-th of them at
+/// `offset` (0..1) of its share of the candidates.
+std::vector<int> spreadFrames(const std::vector<int>& usable, int count, double offset,
+                              const std::vector<BodyFrameFit>& fits)
 {
   std::vector<int> candidates;
   for (int i : usable)
     if (fits[i].status == BodyFitStatus::Ok) candidates.push_back(i);
   if (candidates.empty()) candidates = usable;
-  const int numKeys = std::min<int>(std::max(1, options.shapeFrames), candidates.size());
-  std::vector<int> keys;
-  for (int k = 0; k < numKeys; ++k)
-    keys.push_back(candidates[(2 * k + 1) * candidates.size() / (2 * numKeys)]);
+  const int n = std::min<int>(std::max(1, count), candidates.size());
+  std::vector<int> frames;
+  for (int k = 0; k < n; ++k)
+    frames.push_back(candidates[static_cast<size_t>((k + offset) * candidates.size() / n)]);
+  return frames;
+}
+
+/// Beta alternating with the key frames' poses, from the fitter's current shape and `keyPoses`.
+Eigen::VectorXd estimateShape(SequenceFitter& fitter,
+                              const std::vector<const FrameSurface*>& keySurfaces,
+                              std::vector<BodyPose> keyPoses, bool moveTranslations,
+                              const BodyFitOptions& options, FitProgress& progress)
+{
+  // The key frames' poses with E_c as the shape's steps have it: a shape grown towards the
+  // frame while its poses stay as the thinner body left them takes up their errors (a leg too
+  // long in a squat).
+  std::vector<BodyFitStage> refine(options.stages.end() - 1, options.stages.end());
+  refine.back().coverWeight = options.shapeCoverWeight;
+  for (int round = 0; round < options.shapeRounds; ++round)
+  {
+    fitter.fitShape(keySurfaces, keyPoses, 4, moveTranslations);
+    for (size_t k = 0; k < keySurfaces.size(); ++k)
+    {
+      fitter.fitPose(*keySurfaces[k], keyPoses[k], nullptr, refine, options.extremityGate);
+      progress.advance(1.0);
+    }
+  }
+  return fitter.samples().beta();
+}
+
+/// Beta on key frames spread over the sequence, alternating with their poses: with the poses
+/// fixed, and with BodyFitOptions::shapeTranslationHypothesis also with their translations moving.
+std::vector<Eigen::VectorXd> fitShapes(const BodyModel& model, SequenceFitter& fitter,
+                                       FrameSurfaces& surfaces, const std::vector<int>& usable,
+                                       const BodyFitOptions& options,
+                                       const std::vector<BodyFrameFit>& fits, FitProgress& progress)
+{
+  const std::vector<int> keys = spreadFrames(usable, options.shapeFrames, 0.5, fits);
   std::vector<const FrameSurface*> keySurfaces;
   std::vector<BodyPose> keyPoses;
   for (int i : keys)
@@ -286,29 +319,26 @@ void fitShape(const BodyModel& model, SequenceFitter& fitter, FrameSurfaces& sur
     keySurfaces.push_back(&surfaces.get(i));
     keyPoses.push_back(fits[i].pose);
   }
-  // The key frames' poses with E_c as the shape's steps have it: a shape grown towards the
-  // frame while its poses stay as the thinner body left them takes up their errors (a leg too
-  // long in a squat).
-  std::vector<BodyFitStage> refine(options.stages.end() - 1, options.stages.end());
-  refine.back().coverWeight = options.shapeCoverWeight;
   if (options.statureStart)
   {
+    std::vector<BodyFitStage> refine(options.stages.end() - 1, options.stages.end());
+    refine.back().coverWeight = options.shapeCoverWeight;
     const Eigen::VectorXd& beta = fitter.samples().beta();
     const double ratio = statureRatio(model, beta, keySurfaces, keyPoses);
     fitter.samples().setShape(scaledShape(model, beta.size(), ratio));
     for (size_t k = 0; k < keys.size(); ++k)
       fitter.fitPose(*keySurfaces[k], keyPoses[k], nullptr, refine, options.extremityGate);
   }
-  for (int round = 0; round < options.shapeRounds; ++round)
+  const Eigen::VectorXd start = fitter.samples().beta();
+  std::vector<Eigen::VectorXd> shapes{
+      estimateShape(fitter, keySurfaces, keyPoses, false, options, progress)};
+  if (options.shapeTranslationHypothesis)
   {
-    fitter.fitShape(keySurfaces, keyPoses, 4);
-    for (size_t k = 0; k < keys.size(); ++k)
-    {
-      fitter.fitPose(*keySurfaces[k], keyPoses[k], nullptr, refine, options.extremityGate);
-      progress.advance(1.0);
-    }
+    fitter.samples().setShape(start);
+    shapes.push_back(estimateShape(fitter, keySurfaces, keyPoses, true, options, progress));
   }
   for (int i : keys) surfaces.release(i);
+  return shapes;
 }
 
 /// Third and fourth starts for the final pass: `fit` with one leg raised (hip flexed, knee
@@ -404,12 +434,14 @@ void flagIfUnexplained(double limit, BodyFrameFit& fit)
 /// Of the frames `own` only.
 void recoverPoorFits(SequenceFitter& fitter, FrameSurfaces& surfaces,
                      const std::vector<int>& usable, const std::vector<int>& own, double limit,
-                     std::vector<BodyFrameFit>& fits)
+                     BodyFitResult& result)
 {
+  std::vector<BodyFrameFit>& fits = result.frames;
   const std::vector<BodyPose> poses = okPoses(usable, -1, fits);
   for (int i : own)
   {
     if (fits[i].status != BodyFitStatus::Poor) continue;
+    fitter.samples().setShape(result.betaOf(i));
     fitter.refitFromPoses(surfaces.get(i), poses, fits[i]);
     flagIfUnexplained(limit, fits[i]);
     surfaces.release(i);
@@ -445,20 +477,58 @@ void shareFits(const BodyFitSharing& sharing, const std::vector<int>& own,
     decodeFrameFits(bytes, fits);
 }
 
-/// The first process's shape, on every process: each estimated it from the same fits, and the
-/// poses of all must be fitted under one shape whatever the arithmetic of their machines.
-void shareShape(const BodyFitSharing& sharing, SequenceFitter& fitter)
+/// The first process's shapes, on every process: each estimated them from the same fits, and
+/// the poses of all must be fitted under the same shapes whatever the arithmetic of their
+/// machines.
+void shareShapes(const BodyFitSharing& sharing, std::vector<Eigen::VectorXd>& shapes)
 {
-  const Eigen::VectorXd& beta = fitter.samples().beta();
   ByteWriter own;
   if (sharing.part == 0)
-    for (double b : beta) own.put(b);
+    for (const Eigen::VectorXd& beta : shapes)
+      for (double b : beta) own.put(b);
   const std::string first = sharing.allGather(own.take()).at(0);
-  ByteReader read(first, "shared body shape");
-  Eigen::VectorXd shared(beta.size());
-  for (double& b : shared) b = read.get<double>();
+  ByteReader read(first, "shared body shapes");
+  for (Eigen::VectorXd& beta : shapes)
+    for (double& b : beta) b = read.get<double>();
   read.expectEnd();
-  fitter.samples().setShape(shared);
+}
+
+/// The mean frame distance of the frames that could be fitted.
+double meanFrameDistance(const std::vector<BodyFrameFit>& fits)
+{
+  double sum = 0.0;
+  int count = 0;
+  for (const BodyFrameFit& f : fits)
+    if (f.status != BodyFitStatus::Failed) sum += f.frameDistance, ++count;
+  return count ? sum / count : 0.0;
+}
+
+/// Pass 2 forwards and backwards under each shape; the sequence keeps the shape whose fits leave
+/// less of its frames unexplained on average (BodyFrameFit::frameDistance). Each frame choosing
+/// its own shape explains it better still, but the later stages then meet bodies of two
+/// statures: on pjump the alignment lost 0.1 cm that way, in the very frames that changed shape
+/// (BENCHMARKS.md).
+void finalPasses(SequenceFitter& fitter, FrameSurfaces& surfaces, const Segment& segment,
+                 const BodyFitOptions& options,
+                 const std::function<void(std::vector<BodyFrameFit>&)>& share,
+                 BodyFitResult& result, FitProgress& progress)
+{
+  const std::vector<BodyFrameFit> firstPass = result.frames;
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t s = 0; s < 1 + static_cast<size_t>(result.movedBeta.size() > 0); ++s)
+  {
+    std::vector<BodyFrameFit> fits = firstPass;
+    fitter.samples().setShape(s ? result.movedBeta : result.beta);
+    finalPass(fitter, surfaces, segment.forward, options, fits, progress);
+    share(fits);
+    backwardPass(fitter, surfaces, segment.backward, options, fits, progress);
+    share(fits);
+    const double distance = meanFrameDistance(fits);
+    if (!(distance < best)) continue;
+    best = distance;
+    for (BodyFrameFit& f : fits) f.movedShape = s > 0;
+    result.frames = std::move(fits);
+  }
 }
 } // namespace
 
@@ -483,30 +553,32 @@ BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
   const bool shared = sharing.splits(static_cast<int>(usable.size()));
   if (shared && !sharing.allGather) throw Error("body fit: shared, but with no exchange");
   const Segment segment = segmentOf(usable, sharing);
-  auto share = [&]
+  auto share = [&](std::vector<BodyFrameFit>& fits)
   {
-    if (shared) shareFits(sharing, segment.own, result.frames);
+    if (shared) shareFits(sharing, segment.own, fits);
   };
-  FitProgress fitProgress(progress, 2.0 * segment.forward.size() + segment.backward.size() +
-                                        options.shapeRounds * std::max(1, options.shapeFrames));
+  const int shapes = options.shapeTranslationHypothesis ? 2 : 1;
+  FitProgress fitProgress(progress,
+                          segment.forward.size() +
+                              shapes * (segment.forward.size() + segment.backward.size() +
+                                        options.shapeRounds * std::max(1, options.shapeFrames)));
   FrameSurfaces surfaces(frames, options.extremityPersistence);
   SequenceFitter fitter(model, options);
 
   fitter.setReachTolerance(options.shapeReachTolerance);
   firstPass(fitter, surfaces, segment.forward, options, result.frames, fitProgress);
-  share();
-  fitShape(model, fitter, surfaces, usable, options, result.frames, fitProgress);
-  if (shared) shareShape(sharing, fitter);
-  result.beta = fitter.samples().beta();
+  share(result.frames);
+  std::vector<Eigen::VectorXd> betas =
+      fitShapes(model, fitter, surfaces, usable, options, result.frames, fitProgress);
+  if (shared) shareShapes(sharing, betas);
+  result.beta = betas[0];
+  if (betas.size() > 1) result.movedBeta = betas[1];
   fitter.setReachTolerance(options.reachTolerance);
-  finalPass(fitter, surfaces, segment.forward, options, result.frames, fitProgress);
-  share();
-  backwardPass(fitter, surfaces, segment.backward, options, result.frames, fitProgress);
-  share();
+  finalPasses(fitter, surfaces, segment, options, share, result, fitProgress);
   const double limit = unexplainedLimit(options, result.frames);
   for (BodyFrameFit& fit : result.frames) flagIfUnexplained(limit, fit);
-  recoverPoorFits(fitter, surfaces, usable, segment.own, limit, result.frames);
-  share();
+  recoverPoorFits(fitter, surfaces, usable, segment.own, limit, result);
+  share(result.frames);
 
   // Frames that could not be fitted take their nearest fitted neighbour's pose.
   for (int i = 0; i < n; ++i)

@@ -47,6 +47,7 @@
 #include <Eigen/Geometry>
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -101,6 +102,15 @@ struct BodyFitOptions
   int shapeComponents = 16; ///< leading components fitted (at most the model's)
   int shapeFrames = 8;      ///< key frames for the shape
   int shapeRounds = 3;      ///< alternations of shape and key-frame poses
+  /// The shape is estimated twice: once with the key frames' poses fixed between its steps, once
+  /// with their translations moving with beta (with the pose fixed, a body growing towards a
+  /// tall person's stature pushes its feet through the floor, so it stays near the mean's; with
+  /// them moving, a body whose proportions the shape space lacks can float off the floor). The
+  /// final pass runs under each, and the sequence keeps the shape that leaves less of its frames
+  /// unexplained on average (BodyFrameFit::frameDistance). A few frames cannot tell: pjump's key
+  /// frames, and 24 others refitted from their first-pass poses, favour the second shape, its
+  /// whole sequence the first. Off: the first shape only, and half the final pass.
+  bool shapeTranslationHypothesis = true;
   /// The shape's estimation starts from the mean body scaled, along the shape space, to the
   /// stature the key frames suggest: the median over them of the frame's height over the height
   /// of the body fitted to it with the mean shape (pose-independent: a squat or raised arms
@@ -165,7 +175,7 @@ struct BodyFitOptions
 
 /// Changes whenever the fit's results change for the same options, so that results cached by an
 /// older release are not reused.
-inline constexpr int kBodyFitRevision = 6;
+inline constexpr int kBodyFitRevision = 7;
 
 enum class BodyFitStatus : int
 {
@@ -196,6 +206,7 @@ struct BodyFrameFit
   /// False when previousGap exceeds BodyFitOptions::neighbourGap: the frame was fitted as an
   /// unrelated pose, not from its predecessor alone.
   bool continuesPrevious = true;
+  bool movedShape = false; ///< fitted under BodyFitResult::movedBeta rather than its beta
 };
 
 /// The median frameDistance of the ok fits; nullopt with fewer than `minimumFits` of them.
@@ -208,7 +219,15 @@ double fittedRestPoseDistance(BodyFitStatus status, const BodyPose& pose);
 
 struct BodyFitResult
 {
+  /// The shape estimated with the key frames' poses fixed, and the one estimated with their
+  /// translations moving (BodyFitOptions::shapeTranslationHypothesis; empty when not).
   Eigen::VectorXd beta;
+  Eigen::VectorXd movedBeta;
+  /// The shape frame `k` is fitted under (the same for every frame of a sequence).
+  const Eigen::VectorXd& betaOf(size_t k) const
+  {
+    return k < frames.size() && frames[k].movedShape && movedBeta.size() ? movedBeta : beta;
+  }
   std::vector<BodyFrameFit> frames;
 };
 

@@ -543,57 +543,54 @@ public:
     refitWithLimbsAimed(frame, fit);
   }
 
-  /// Gauss-Newton steps on beta with the key frames' poses fixed.
-  void fitShape(const std::vector<const FrameSurface*>& frames, const std::vector<BodyPose>& poses,
-                int iterations)
+  /// Gauss-Newton steps on beta with the key frames' joint rotations fixed, and their
+  /// translations too unless `moveTranslations` (BodyFitOptions::shapeTranslationHypothesis).
+  void fitShape(const std::vector<const FrameSurface*>& frames, std::vector<BodyPose>& poses,
+                int iterations, bool moveTranslations)
   {
     const int k = std::min(options_.shapeComponents, samples_.numComponents());
     if (k <= 0 || frames.empty()) return;
+    const int n = k + (moveTranslations ? 3 * static_cast<int>(frames.size()) : 0);
     BodyFitStage stage = options_.stages.back();
     stage.coverWeight = options_.shapeCoverWeight;
     double lambda = 1e-3;
     for (int it = 0; it < iterations; ++it)
     {
-      Eigen::MatrixXd h = Eigen::MatrixXd::Zero(k, k);
-      Eigen::VectorXd g = Eigen::VectorXd::Zero(k);
+      Eigen::MatrixXd h = Eigen::MatrixXd::Zero(n, n);
+      Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
       std::vector<Assignments> assignments;
-      const double perFrame = 1.0 / frames.size();
       for (size_t f = 0; f < frames.size(); ++f)
-      {
-        Points normals;
-        const Points p = samples_.pose(poses[f], &normals);
-        Assignments a = assign(*frames[f], poses[f], p, normals, stage, options_.extremityGate);
-        for (auto& r : a.planes) r.weight *= perFrame;
-        for (auto& r : a.points) r.weight *= perFrame;
-        std::vector<Points> columns(k);
-        parallelFor(
-            0, k,
-            [&](int c)
-            { columns[c] = (samples_.poseWithShapeStep(poses[f], c, kStep) - p) / kStep; },
-            4);
-        a.accumulate(p, columns, h, g);
-        assignments.push_back(std::move(a));
-      }
+        assignments.push_back(accumulateShapeFrame(*frames[f], poses[f], stage, k,
+                                                   1.0 / frames.size(), static_cast<int>(f), h, g));
       const Eigen::VectorXd beta = samples_.beta();
-      auto energyOf = [&](const Eigen::VectorXd& b)
+      const std::vector<BodyPose> start = poses;
+      auto apply = [&](const Eigen::VectorXd& x)
       {
+        Eigen::VectorXd b = beta;
+        b.head(k) += x.head(k);
         samples_.setShape(b);
+        for (size_t f = 0; k + 3 * f + 3 <= static_cast<size_t>(n); ++f)
+          poses[f].translation = start[f].translation + x.segment<3>(k + 3 * f);
+        return b;
+      };
+      auto energyOf = [&](const Eigen::VectorXd& x)
+      {
+        const Eigen::VectorXd b = apply(x);
         double e = options_.shapePriorWeight * b.head(k).squaredNorm();
         for (size_t f = 0; f < frames.size(); ++f)
           e += assignments[f].energy(samples_.pose(poses[f]));
         return e;
       };
-      h.diagonal().array() += options_.shapePriorWeight;
-      g += options_.shapePriorWeight * beta.head(k);
-      const double energy = energyOf(beta);
+      h.diagonal().head(k).array() += options_.shapePriorWeight;
+      g.head(k) += options_.shapePriorWeight * beta.head(k);
+      const double energy = energyOf(Eigen::VectorXd::Zero(n));
       bool accepted = false;
       for (int attempt = 0; attempt < 8 && !accepted; ++attempt)
       {
         Eigen::MatrixXd damped = h;
         damped.diagonal().array() += lambda * (h.diagonal().array() + 1e-12);
-        Eigen::VectorXd candidate = beta;
-        candidate.head(k) += damped.ldlt().solve(-g);
-        const double e = energyOf(candidate);
+        const Eigen::VectorXd step = damped.ldlt().solve(-g);
+        const double e = energyOf(step);
         if (std::isfinite(e) && e <= energy)
         {
           accepted = true;
@@ -604,13 +601,49 @@ public:
       }
       if (!accepted)
       {
-        samples_.setShape(beta);
+        apply(Eigen::VectorXd::Zero(n));
         break;
       }
     }
   }
 
 private:
+  /// One key frame's part of a shape step: its assignments (weighted by `weight`), and J^T W J,
+  /// J^T W r added to `h`, `g` over beta's first k components and, when `h` has room for them,
+  /// the frame's translation (parameters k + 3 f .. k + 3 f + 2).
+  Assignments accumulateShapeFrame(const FrameSurface& frame, const BodyPose& pose,
+                                   const BodyFitStage& stage, int k, double weight, int f,
+                                   Eigen::MatrixXd& h, Eigen::VectorXd& g)
+  {
+    Points normals;
+    const Points p = samples_.pose(pose, &normals);
+    Assignments a = assign(frame, pose, p, normals, stage, options_.extremityGate);
+    for (auto& r : a.planes) r.weight *= weight;
+    for (auto& r : a.points) r.weight *= weight;
+    const bool moves = h.rows() > k;
+    std::vector<Points> columns(k + (moves ? 3 : 0));
+    parallelFor(
+        0, k, [&](int c) { columns[c] = (samples_.poseWithShapeStep(pose, c, kStep) - p) / kStep; },
+        4);
+    for (int d = 0; moves && d < 3; ++d)
+      columns[k + d] = Points::Zero(p.rows(), 3), columns[k + d].col(d).setOnes();
+    const int m = static_cast<int>(columns.size());
+    Eigen::MatrixXd hf = Eigen::MatrixXd::Zero(m, m);
+    Eigen::VectorXd gf = Eigen::VectorXd::Zero(m);
+    a.accumulate(p, columns, hf, gf);
+    h.topLeftCorner(k, k) += hf.topLeftCorner(k, k);
+    g.head(k) += gf.head(k);
+    if (moves)
+    {
+      const int t = k + 3 * f;
+      h.block(0, t, k, 3) += hf.topRightCorner(k, 3);
+      h.block(t, 0, 3, k) += hf.bottomLeftCorner(3, k);
+      h.block<3, 3>(t, t) += hf.bottomRightCorner<3, 3>();
+      g.segment<3>(t) += gf.tail<3>();
+    }
+    return a;
+  }
+
   /// A limb: the extremity label it ends in (BodyFitPose.h), its root joint and the joints
   /// below the root (an arm has two: its wrist is listed twice).
   struct Limb
