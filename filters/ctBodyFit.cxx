@@ -49,6 +49,7 @@ ctOptionClampDefinition(ctBodyFit, InsideTolerance, double, Options.transfer.ins
 ctOptionDefinition(ctBodyFit, RegisterFrames, bool, Options.registerFrames);
 ctOptionDefinition(ctBodyFit, StatureStart, bool, Options.fit.statureStart);
 ctOptionDefinition(ctBodyFit, LimbRestarts, bool, Options.fit.limbRestarts);
+ctOptionDefinition(ctBodyFit, TwoShapes, bool, Options.fit.twoShapes);
 
 ctBodyFit::ctBodyFit()
 {
@@ -298,4 +299,5 @@ void ctBodyFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RegisterFrames: " << this->Options.registerFrames << "\n";
   os << indent << "StatureStart: " << this->Options.fit.statureStart << "\n";
   os << indent << "LimbRestarts: " << this->Options.fit.limbRestarts << "\n";
+  os << indent << "TwoShapes: " << this->Options.fit.twoShapes << "\n";
 }

@@ -10,9 +10,8 @@
  * A shape beta for the sequence and a pose per frame minimise w_l E_l + w_n E_n + w_w E_w
  * (automatically detected extremities, closest points, body inside the clothing) with a
  * temporal term; see clothtrack/body/BodyFit.h for the terms and the weight schedule. The
- * scales below multiply the schedule's weights. The shape is estimated two ways, and each
- * frame is fitted under the one that explains it better (BodyFitOptions::
- * shapeTranslationHypothesis).
+ * scales below multiply the schedule's weights. The shape is estimated two ways, and the one
+ * under which the frames are explained better is kept (TwoShapes, BodyFitOptions::twoShapes).
  *
  * Output port 0: vtkMultiBlockDataSet, one fitted body per frame (the model's connectivity)
  * with field data FrameIndex, FitStatus (0 ok, 1 poor, 2 failed), Pose (22 axis-angle joint
@@ -82,6 +81,11 @@ public:
   virtual void SetLimbRestarts(bool value);
   virtual bool GetLimbRestarts();
   vtkBooleanMacro(LimbRestarts, bool);
+  /// Estimate the shape two ways and keep the one under which the frames are explained better
+  /// (on by default); off: the key frames' poses fixed only, and pass 2 runs once.
+  virtual void SetTwoShapes(bool value);
+  virtual bool GetTwoShapes();
+  vtkBooleanMacro(TwoShapes, bool);
   /// Key frames used to estimate the shape.
   virtual void SetShapeFrames(int value);
   virtual int GetShapeFrames();

@@ -90,6 +90,9 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "stature-start", po::bool_switch(&s.statureStart),
       "body fit: start the shape's estimation at the stature the frames suggest rather than at "
       "the mean body (for people far from 1.7 m)")(
+      "no-two-shapes", po::bool_switch(),
+      "body fit: estimate the shape one way only, with the key frames' poses fixed (its pass 2 "
+      "runs once, not under two shapes)")(
       "no-limb-restarts", po::bool_switch(),
       "body fit: do not start frames unrelated to their predecessor again with their limbs at "
       "rest and aimed at the extremities their fit leaves unpaired")(
@@ -272,6 +275,7 @@ std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode
   s.startFromBody = !values["no-body-start"].as<bool>();
   s.stretchStart = !values["no-start-stretch"].as<bool>();
   s.limbRestarts = !values["no-limb-restarts"].as<bool>();
+  s.twoShapes = !values["no-two-shapes"].as<bool>();
   s.selection.templateCriterion = parseTemplateCriterion(criterion);
   check(s);
   resolveAutomatic(s.sequence, s.input);

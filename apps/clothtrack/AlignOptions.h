@@ -67,6 +67,9 @@ struct AlignSettings
   /// Body fit: frames unrelated to their predecessor are also started with their limbs at rest
   /// and aimed at unpaired extremities (BodyFitOptions::limbRestarts).
   bool limbRestarts = true;
+  /// Body fit: the shape estimated two ways, the better kept (BodyFitOptions::
+  /// twoShapes); off with --no-two-shapes.
+  bool twoShapes = true;
   /// Under mpirun, each process fits the body to a segment of the sequence, tracking
   /// bodyFitOverlap frames of its neighbours' segments first (BodyFitSharing). Off: the first
   /// process fits the whole sequence, and the result is one process's bit for bit.

@@ -143,7 +143,7 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
           {"weights",
            {f.temporalWeight, f.rootTemporalWeight, f.legTemporalWeight, f.posePriorWeight,
             f.hingeStiffness, f.shapePriorWeight}},
-          {"shape", {f.shapeComponents, f.shapeFrames, f.shapeRounds, f.statureStart}},
+          {"shape", {f.shapeComponents, f.shapeFrames, f.shapeRounds, f.statureStart, f.twoShapes}},
           {"samples", f.samples},
           {"robust_scale", f.robustScale},
           {"cover", {f.shapeCoverWeight, f.coverScale}},
@@ -183,6 +183,7 @@ void runBodyStage(Run& run, bool together)
   options.registerFrames = s.registerFrames;
   options.fit.statureStart = s.statureStart;
   options.fit.limbRestarts = s.limbRestarts;
+  options.fit.twoShapes = s.twoShapes;
   options.keepBodyLandmarks = false; // only the seeds are used: a long sequence stays small
   run.landmarkKey = {{"files", run.input.files},  {"model", s.modelPath},
                      {"up", s.sequence.up},       {"unit", s.sequence.unit},

@@ -73,6 +73,9 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
       "stature-start", po::bool_switch(&fit.statureStart),
       "start the shape's estimation at the stature the frames suggest rather than at the mean "
       "body (for people far from 1.7 m)")(
+      "no-two-shapes", po::bool_switch(),
+      "estimate the body shape one way only, with the key frames' poses fixed (pass 2 runs once, "
+      "not under two shapes)")(
       "no-limb-restarts", po::bool_switch(),
       "do not start frames unrelated to their predecessor again with their limbs at rest and "
       "aimed at the extremities their fit leaves unpaired");
@@ -84,6 +87,7 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
                     values))
     return std::nullopt;
   fit.limbRestarts = !values["no-limb-restarts"].as<bool>();
+  fit.twoShapes = !values["no-two-shapes"].as<bool>();
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
   if (fit.samples < 50) throw UsageError{"--samples must be at least 50"};
   if (fit.shapeFrames < 1) throw UsageError{"--shape-frames must be at least 1"};

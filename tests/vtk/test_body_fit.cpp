@@ -214,7 +214,7 @@ TEST(BodyFit, GrowsToATallPerson)
   const std::vector<TriangleMesh>& captures = captured.captures;
   BodyFitOptions fromTheMean;
   fromTheMean.shapeFrames = 3;
-  fromTheMean.shapeTranslationHypothesis = false; // beta alone is measured
+  fromTheMean.twoShapes = false; // beta alone is measured
   BodyFitOptions options = fromTheMean;
   options.statureStart = true;
   const BodyFitResult fit = fitBodySequence(builtinBodyModel(), pointers(captures), options);
@@ -238,9 +238,9 @@ TEST(BodyFit, KeepsTheShapeThatExplainsTheFramesBetter)
   const Sequence captured = capturedSequence("trousers-walkloop", 6, 1.95);
   BodyFitOptions fixedOnly;
   fixedOnly.shapeFrames = 3;
-  fixedOnly.shapeTranslationHypothesis = false;
+  fixedOnly.twoShapes = false;
   BodyFitOptions both = fixedOnly;
-  both.shapeTranslationHypothesis = true;
+  both.twoShapes = true;
   const auto frames = pointers(captured.captures);
   const BodyFitResult one = fitBodySequence(builtinBodyModel(), frames, fixedOnly);
   const BodyFitResult two = fitBodySequence(builtinBodyModel(), frames, both);

@@ -305,7 +305,7 @@ Eigen::VectorXd estimateShape(SequenceFitter& fitter,
 }
 
 /// Beta on key frames spread over the sequence, alternating with their poses: with the poses
-/// fixed, and with BodyFitOptions::shapeTranslationHypothesis also with their translations moving.
+/// fixed, and with BodyFitOptions::twoShapes also with their translations moving.
 std::vector<Eigen::VectorXd> fitShapes(const BodyModel& model, SequenceFitter& fitter,
                                        FrameSurfaces& surfaces, const std::vector<int>& usable,
                                        const BodyFitOptions& options,
@@ -332,7 +332,7 @@ std::vector<Eigen::VectorXd> fitShapes(const BodyModel& model, SequenceFitter& f
   const Eigen::VectorXd start = fitter.samples().beta();
   std::vector<Eigen::VectorXd> shapes{
       estimateShape(fitter, keySurfaces, keyPoses, false, options, progress)};
-  if (options.shapeTranslationHypothesis)
+  if (options.twoShapes)
   {
     fitter.samples().setShape(start);
     shapes.push_back(estimateShape(fitter, keySurfaces, keyPoses, true, options, progress));
@@ -557,7 +557,7 @@ BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
   {
     if (shared) shareFits(sharing, segment.own, fits);
   };
-  const int shapes = options.shapeTranslationHypothesis ? 2 : 1;
+  const int shapes = options.twoShapes ? 2 : 1;
   FitProgress fitProgress(progress,
                           segment.forward.size() +
                               shapes * (segment.forward.size() + segment.backward.size() +

@@ -110,7 +110,7 @@ struct BodyFitOptions
   /// unexplained on average (BodyFrameFit::frameDistance). A few frames cannot tell: pjump's key
   /// frames, and 24 others refitted from their first-pass poses, favour the second shape, its
   /// whole sequence the first. Off: the first shape only, and half the final pass.
-  bool shapeTranslationHypothesis = true;
+  bool twoShapes = true;
   /// The shape's estimation starts from the mean body scaled, along the shape space, to the
   /// stature the key frames suggest: the median over them of the frame's height over the height
   /// of the body fitted to it with the mean shape (pose-independent: a squat or raised arms
@@ -220,7 +220,7 @@ double fittedRestPoseDistance(BodyFitStatus status, const BodyPose& pose);
 struct BodyFitResult
 {
   /// The shape estimated with the key frames' poses fixed, and the one estimated with their
-  /// translations moving (BodyFitOptions::shapeTranslationHypothesis; empty when not).
+  /// translations moving (BodyFitOptions::twoShapes; empty when not).
   Eigen::VectorXd beta;
   Eigen::VectorXd movedBeta;
   /// The shape frame `k` is fitted under (the same for every frame of a sequence).

@@ -544,7 +544,7 @@ public:
   }
 
   /// Gauss-Newton steps on beta with the key frames' joint rotations fixed, and their
-  /// translations too unless `moveTranslations` (BodyFitOptions::shapeTranslationHypothesis).
+  /// translations too unless `moveTranslations` (BodyFitOptions::twoShapes).
   void fitShape(const std::vector<const FrameSurface*>& frames, std::vector<BodyPose>& poses,
                 int iterations, bool moveTranslations)
   {
