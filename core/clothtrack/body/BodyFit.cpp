@@ -493,18 +493,19 @@ void shareShapes(const BodyFitSharing& sharing, std::vector<Eigen::VectorXd>& sh
   read.expectEnd();
 }
 
-/// The mean frame distance of the frames that could be fitted.
-double meanFrameDistance(const std::vector<BodyFrameFit>& fits)
+/// The median frame distance of the frames that could be fitted.
+double typicalFrameDistance(const std::vector<BodyFrameFit>& fits)
 {
-  double sum = 0.0;
-  int count = 0;
+  std::vector<double> distances;
   for (const BodyFrameFit& f : fits)
-    if (f.status != BodyFitStatus::Failed) sum += f.frameDistance, ++count;
-  return count ? sum / count : 0.0;
+    if (f.status != BodyFitStatus::Failed) distances.push_back(f.frameDistance);
+  if (distances.empty()) return 0.0;
+  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+  return distances[distances.size() / 2];
 }
 
-/// Pass 2 forwards and backwards under each shape; the sequence keeps the shape whose fits leave
-/// less of its frames unexplained on average (BodyFrameFit::frameDistance). Each frame choosing
+/// Pass 2 forwards and backwards under each shape; the sequence keeps the shape under which its
+/// median frame distance is lower (BodyFitOptions::twoShapes). Each frame choosing
 /// its own shape explains it better still, but the later stages then meet bodies of two
 /// statures: on pjump the alignment lost 0.1 cm that way, in the very frames that changed shape
 /// (BENCHMARKS.md).
@@ -523,7 +524,7 @@ void finalPasses(SequenceFitter& fitter, FrameSurfaces& surfaces, const Segment&
     share(fits);
     backwardPass(fitter, surfaces, segment.backward, options, fits, progress);
     share(fits);
-    const double distance = meanFrameDistance(fits);
+    const double distance = typicalFrameDistance(fits);
     if (!(distance < best)) continue;
     best = distance;
     for (BodyFrameFit& f : fits) f.movedShape = s > 0;

@@ -106,8 +106,10 @@ struct BodyFitOptions
   /// with their translations moving with beta (with the pose fixed, a body growing towards a
   /// tall person's stature pushes its feet through the floor, so it stays near the mean's; with
   /// them moving, a body whose proportions the shape space lacks can float off the floor). The
-  /// final pass runs under each, and the sequence keeps the shape that leaves less of its frames
-  /// unexplained on average (BodyFrameFit::frameDistance). A few frames cannot tell: pjump's key
+  /// final pass runs under each, and the sequence keeps the shape under which its median frame
+  /// distance (BodyFrameFit::frameDistance) is lower: the median, so that a frame that is not a
+  /// person (a box, in app.align) does not choose the shape for the others, and then go
+  /// unflagged because the shape it chose fits it. A few frames cannot tell: pjump's key
   /// frames, and 24 others refitted from their first-pass poses, favour the second shape, its
   /// whole sequence the first. Off: the first shape only, and half the final pass.
   bool twoShapes = true;
