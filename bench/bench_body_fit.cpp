@@ -91,7 +91,7 @@ int synthetic(const std::string& preset, int numFrames, double stature,
   for (int i = 0; i < numFrames; ++i)
   {
     Points fittedJoints, trueJoints;
-    const TriangleMesh fitted = model.posed(fit.betaOf(i), fit.frames[i].pose, &fittedJoints);
+    const TriangleMesh fitted = model.posed(fit.beta, fit.frames[i].pose, &fittedJoints);
     const TriangleMesh body = model.posed(trueBeta, truth[i].pose, &trueJoints);
     const double frameJointError = (fittedJoints - trueJoints).rowwise().norm().mean();
     jointError += frameJointError;
@@ -165,7 +165,7 @@ int folder(const std::string& path, int stride, const BodyFitOptions& options)
   LandmarkStats landmarks;
   for (size_t i = 0; i < used.size(); ++i)
   {
-    const TriangleMesh fitted = model.posed(fit.betaOf(i), fit.frames[i].pose);
+    const TriangleMesh fitted = model.posed(fit.beta, fit.frames[i].pose);
     const SurfaceLocator surface(used[i]);
     inside += fractionInside(surface, fitted.V);
     near += insideOrNear(surface, fitted.V, 0.01);

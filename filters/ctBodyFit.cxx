@@ -123,7 +123,7 @@ vtkSmartPointer<vtkPolyData> fittedBodyPolyData(const clothtrack::BodyModel& mod
   using namespace clothtrack;
   const BodyFrameFit& f = fit.frames[k];
   Points joints;
-  vtkSmartPointer<vtkPolyData> bodyData = toPolyData(model.posed(fit.betaOf(k), f.pose, &joints));
+  vtkSmartPointer<vtkPolyData> bodyData = toPolyData(model.posed(fit.beta, f.pose, &joints));
   addBodyModelArrays(model, joints, bodyData);
   vtkFieldData* fd = bodyData->GetFieldData();
   clothtrack::addFieldValue(fd, clothtrack::arrays::FrameIndex, k);
@@ -139,7 +139,6 @@ vtkSmartPointer<vtkPolyData> fittedBodyPolyData(const clothtrack::BodyModel& mod
   clothtrack::addFieldValue(fd, "InsideFraction", f.insideFraction);
   clothtrack::addFieldValue(fd, "FrameDistance", f.frameDistance);
   clothtrack::addFieldValue(fd, "PreviousGap", f.previousGap);
-  clothtrack::addFieldValue(fd, "MovedShape", static_cast<int>(f.movedShape));
   return bodyData;
 }
 
@@ -237,13 +236,14 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
     bodies->SetNumberOfBlocks(n);
     landmarks->SetNumberOfBlocks(n);
     for (const auto& [name, coefficients] :
-         {std::pair{"ShapeCoefficients", &fit.beta}, {"MovedShapeCoefficients", &fit.movedBeta}})
+         {std::pair{"ShapeCoefficients", &fit.beta}, {"OtherShapeCoefficients", &fit.otherBeta}})
     {
       vtkNew<vtkDoubleArray> beta;
       beta->SetName(name);
       for (double b : *coefficients) beta->InsertNextValue(b);
       bodies->GetFieldData()->AddArray(beta);
     }
+    addFieldValue(bodies->GetFieldData(), "MovedShape", static_cast<int>(fit.movedShape));
     StatusTable table;
     const std::vector<double> restPoses = restPoseDistances(fit);
     for (int k = 0; k < n; ++k)

@@ -7,7 +7,7 @@
  * ctMeshSequenceReader); frames need not share connectivity. Input port 1 (optional): a body
  * model (ctBodyModelReader); the built-in model when absent.
  *
- * A shape beta for the sequence and a pose per frame minimise w_l E_l + w_n E_n + w_w E_w
+ * One shape beta for the sequence and a pose per frame minimise w_l E_l + w_n E_n + w_w E_w
  * (automatically detected extremities, closest points, body inside the clothing) with a
  * temporal term; see clothtrack/body/BodyFit.h for the terms and the weight schedule. The
  * scales below multiply the schedule's weights. The shape is estimated two ways, and the one
@@ -18,9 +18,10 @@
  * rotations then the translation), RestPoseDistance (sum of the non-root joint angles in
  * radians, NaN unless the fit is ok), MedianDistance, InsideFraction, FrameDistance (mean
  * distance from the frame to the body, m) and PreviousGap (mean surface distance to the frame
- * before, m: above 6 cm the frame is fitted as an unrelated pose) and MovedShape (1: fitted
- * under MovedShapeCoefficients); the collection's field data holds ShapeCoefficients (beta)
- * and MovedShapeCoefficients (empty when the second shape was not estimated).
+ * before, m: above 6 cm the frame is fitted as an unrelated pose); the collection's field
+ * data holds ShapeCoefficients (beta, the shape kept), MovedShape (1 when that is the one
+ * estimated with the key frames' translations moving) and OtherShapeCoefficients (the estimate
+ * not kept; empty with TwoShapes off).
  * Output port 1: vtkMultiBlockDataSet, the oriented landmarks of each frame (as
  * ctLandmarkTransfer: Valid, Direction, LandmarkId, LandmarkName, Offset, FrameFace,
  * FrameBarycentric; field data FoundFraction and RestPoseDistance, which lets

@@ -36,7 +36,8 @@ void writeBodyFitJson(const std::string& path, const std::string& modelPath,
 {
   const nlohmann::json head = {{"model", modelPath},
                                {"beta", coefficientsJson(stage.body.beta)},
-                               {"moved_beta", coefficientsJson(stage.body.movedBeta)}};
+                               {"moved_shape", stage.body.movedShape},
+                               {"other_beta", coefficientsJson(stage.body.otherBeta)}};
   std::string text = head.dump(1);
   text.pop_back(); // the closing brace: the frames follow
   AtomicTextFile file(path);
@@ -53,7 +54,8 @@ void writeBodyStage(const std::string& path, const nlohmann::json& key,
   AtomicTextFile file(path);
   file << nlohmann::json({{"key", key},
                           {"beta", coefficientsJson(stage.body.beta)},
-                          {"moved_beta", coefficientsJson(stage.body.movedBeta)},
+                          {"moved_shape", stage.body.movedShape},
+                          {"other_beta", coefficientsJson(stage.body.otherBeta)},
                           {"frames", stage.landmarks.size()}})
               .dump()
        << "\n";
@@ -84,7 +86,8 @@ std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::
     if (head.at("key") != key) return std::nullopt;
     BodyStage out;
     out.body.beta = coefficients(head.at("beta"));
-    out.body.movedBeta = coefficients(head.at("moved_beta"));
+    out.body.movedShape = head.at("moved_shape").get<bool>();
+    out.body.otherBeta = coefficients(head.at("other_beta"));
     const auto frames = head.at("frames").get<size_t>();
     auto offset = static_cast<std::int64_t>(in.tellg());
     while (out.lineOffsets.size() < frames && std::getline(in, line))

@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -53,8 +52,7 @@ nlohmann::json bodyFrameJson(const std::string& file, const BodyFrameFit& fit)
       {"rest_pose_distance", std::isnan(fromRest) ? nlohmann::json() : nlohmann::json(fromRest)},
       {"frame_distance_m", fit.frameDistance},
       {"previous_gap_m", fit.previousGap},
-      {"continues_previous", fit.continuesPrevious},
-      {"moved_shape", fit.movedShape}};
+      {"continues_previous", fit.continuesPrevious}};
 }
 
 namespace
@@ -88,7 +86,6 @@ BodyFrameFit bodyFrameFit(const nlohmann::json& record)
   fit.frameDistance = record.value("frame_distance_m", 0.0);
   fit.previousGap = record.value("previous_gap_m", 0.0);
   fit.continuesPrevious = record.value("continues_previous", true);
-  fit.movedShape = record.value("moved_shape", false);
   return fit;
 }
 

@@ -20,8 +20,7 @@ BodyFitResult fitBodiesWithProgress(const BodyModel& model,
 
 /// One frame of a body_fit.json ('clothtrack body-fit', 'clothtrack align'): file, status name,
 /// joint rotations, translation, rest_pose_distance (null unless the fit is ok),
-/// frame_distance_m, previous_gap_m, continues_previous and moved_shape (fitted under the
-/// moved_beta shape, BodyFitResult::movedBeta).
+/// frame_distance_m, previous_gap_m and continues_previous.
 nlohmann::json bodyFrameJson(const std::string& file, const BodyFrameFit& fit);
 /// The fit such a record describes (status, pose, message and the figures above, where
 /// present); throws std::exception when it is not one.

@@ -149,7 +149,7 @@ BodyFitTotals writeFrames(const BodyFitSettings& s, const BodyModel& model,
       [&](int k)
       {
         const BodyFrameFit& f = result.frames[k];
-        bodies[k] = model.posed(result.betaOf(k), f.pose, &bodyJoints[k]);
+        bodies[k] = model.posed(result.beta, f.pose, &bodyJoints[k]);
         if (frames[k] && f.status != BodyFitStatus::Failed)
           insideFractions[k] = fractionInside(SurfaceLocator(*frames[k]), bodies[k].V);
       },
@@ -244,7 +244,8 @@ int runBodyFit(const Args& args)
   const double insideFraction = n ? totals.insideSum / n : 0.0;
   nlohmann::json summary = {{"frames", n},
                             {"beta", coefficientsJson(result.beta)},
-                            {"moved_beta", coefficientsJson(result.movedBeta)},
+                            {"moved_shape", result.movedShape},
+                            {"other_beta", coefficientsJson(result.otherBeta)},
                             {"landmarks_found_fraction", foundFraction},
                             {"body_inside_fraction", insideFraction},
                             {"seconds_total", secondsSince(start)},

@@ -218,8 +218,7 @@ def _render_body(out, metrics, k, path):
     source = clothtrack.ctBodyModelSource()
     if summary.get("model"):
         source.SetModelFileName(summary["model"])
-    shape = summary["moved_beta"] if pose.get("moved_shape") else summary["beta"]
-    for index, value in enumerate(shape):
+    for index, value in enumerate(summary["beta"]):
         source.SetShapeCoefficient(index, value)
     for joint, rotation in enumerate(pose["rotations"]):
         source.SetJointRotation(joint, *rotation)

@@ -90,7 +90,7 @@ void fitErrors(const BodyFitResult& fit, const Sequence& truth, const Eigen::Mat
   for (size_t i = first; i < truth.poses.size(); ++i)
   {
     Points fittedJoints, trueJoints;
-    const TriangleMesh fitted = model.posed(fit.betaOf(i), fit.frames[i].pose, &fittedJoints);
+    const TriangleMesh fitted = model.posed(fit.beta, fit.frames[i].pose, &fittedJoints);
     TriangleMesh body = model.posed(truth.beta, truth.poses[i], &trueJoints);
     trueJoints = trueJoints * turn.transpose();
     body.V = body.V * turn.transpose();
@@ -244,17 +244,17 @@ TEST(BodyFit, KeepsTheShapeThatExplainsTheFramesBetter)
   const auto frames = pointers(captured.captures);
   const BodyFitResult one = fitBodySequence(builtinBodyModel(), frames, fixedOnly);
   const BodyFitResult two = fitBodySequence(builtinBodyModel(), frames, both);
-  EXPECT_EQ(one.movedBeta.size(), 0);
-  ASSERT_EQ(two.movedBeta.size(), two.beta.size());
-  EXPECT_EQ(two.beta, one.beta); // the first shape is estimated as without the second
+  EXPECT_EQ(one.otherBeta.size(), 0);
+  EXPECT_FALSE(one.movedShape);
+  ASSERT_TRUE(two.movedShape); // the second shape is kept
+  ASSERT_EQ(two.otherBeta.size(), two.beta.size());
+  EXPECT_EQ(two.otherBeta, one.beta); // the first shape is estimated as without the second
   const double truth = restHeight(builtinBodyModel(), captured.beta);
-  const double fixedHeight = restHeight(builtinBodyModel(), two.beta);
-  const double movedHeight = restHeight(builtinBodyModel(), two.movedBeta);
+  const double fixedHeight = restHeight(builtinBodyModel(), two.otherBeta);
+  const double movedHeight = restHeight(builtinBodyModel(), two.beta);
   double oneDistance = 0.0, twoDistance = 0.0;
   for (size_t i = 0; i < frames.size(); ++i)
   {
-    EXPECT_FALSE(one.frames[i].movedShape);
-    EXPECT_TRUE(two.frames[i].movedShape) << i; // one shape for the whole sequence
     oneDistance += one.frames[i].frameDistance / frames.size();
     twoDistance += two.frames[i].frameDistance / frames.size();
   }
@@ -538,13 +538,13 @@ TEST(BodyFit, SharedAmongProcessesFitsAsOneDoes)
   const BodyFitResult parts[] = {stages[0].body, stages[1].body};
 
   ASSERT_EQ(parts[0].beta, parts[1].beta);
-  ASSERT_EQ(parts[0].movedBeta, parts[1].movedBeta);
+  ASSERT_EQ(parts[0].otherBeta, parts[1].otherBeta);
+  ASSERT_EQ(parts[0].movedShape, parts[1].movedShape);
   for (size_t i = 0; i < walk.captures.size(); ++i)
   {
     EXPECT_EQ(parts[0].frames[i].pose.rotations, parts[1].frames[i].pose.rotations) << i;
     EXPECT_EQ(parts[0].frames[i].pose.translation, parts[1].frames[i].pose.translation) << i;
     EXPECT_EQ(parts[0].frames[i].status, parts[1].frames[i].status) << i;
-    EXPECT_EQ(parts[0].frames[i].movedShape, parts[1].frames[i].movedShape) << i;
     EXPECT_EQ(parts[0].frames[i].extremities, parts[1].frames[i].extremities) << i;
   }
   // The second half is tracked from a start of its own.
@@ -555,7 +555,7 @@ TEST(BodyFit, SharedAmongProcessesFitsAsOneDoes)
   {
     const TriangleMesh& frame = walk.captures[i];
     const std::vector<OrientedSurfacePoint> expected = landmarkSeeds(transferLandmarks(
-        orientedLandmarks(model, model.posed(parts[0].betaOf(i), parts[0].frames[i].pose)), frame,
+        orientedLandmarks(model, model.posed(parts[0].beta, parts[0].frames[i].pose)), frame,
         SurfaceLocator(frame), LandmarkTransferOptions()));
     ASSERT_FALSE(expected.empty()) << i;
     for (const BodyStageResult& stage : stages)
@@ -694,7 +694,7 @@ TEST(BodyFit, WorksWithAMakeHumanModel)
   for (size_t i = 0; i < frames.size(); ++i)
   {
     EXPECT_EQ(fit.frames[i].status, BodyFitStatus::Ok) << fit.frames[i].message;
-    const Points fitted = model.posedJoints(fit.betaOf(i), fit.frames[i].pose);
+    const Points fitted = model.posedJoints(fit.beta, fit.frames[i].pose);
     const Points trueJoints = builtinBodyModel().posedJoints(truth.beta, truth.poses[i]);
     for (int j : {Pelvis, Head, LeftWrist, RightWrist, LeftAnkle, RightAnkle})
       EXPECT_LT((fitted.row(j) - trueJoints.row(j)).norm(), 0.12) << jointNames()[j];

@@ -21,14 +21,23 @@
 
 namespace clothtrack
 {
+namespace
+{
+/// The value at index size / 2 once sorted (the upper of the two middle ones); `values` non-empty.
+double upperMedian(std::vector<double> values)
+{
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+} // namespace
+
 std::optional<double> medianFrameDistance(const std::vector<BodyFrameFit>& fits, size_t minimumFits)
 {
   std::vector<double> distances;
   for (const BodyFrameFit& f : fits)
     if (f.status == BodyFitStatus::Ok) distances.push_back(f.frameDistance);
   if (distances.empty() || distances.size() < minimumFits) return std::nullopt;
-  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
-  return distances[distances.size() / 2];
+  return upperMedian(std::move(distances));
 }
 
 double fittedRestPoseDistance(BodyFitStatus status, const BodyPose& pose)
@@ -260,25 +269,32 @@ double statureRatio(const BodyModel& model, const Eigen::VectorXd& beta,
     const double body = heightOf(model.posed(beta, poses[k]).V);
     if (body > 0) ratios.push_back(heightOf(frames[k]->mesh->V) / body);
   }
-  if (ratios.empty()) return 1.0;
-  std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
-  return ratios[ratios.size() / 2];
+  return ratios.empty() ? 1.0 : upperMedian(std::move(ratios));
 }
 
-/// `count` frames spread over the sequence, well-fitted ones first, the k-th of them at
-/// `offset` (0..1) of its share of the candidates.
-std::vector<int> spreadFrames(const std::vector<int>& usable, int count, double offset,
-                              const std::vector<BodyFrameFit>& fits)
+/// Key frames for the shape, spread over the sequence, well-fitted ones first.
+std::vector<int> shapeKeyFrames(const std::vector<int>& usable, const BodyFitOptions& options,
+                                const std::vector<BodyFrameFit>& fits)
 {
   std::vector<int> candidates;
   for (int i : usable)
     if (fits[i].status == BodyFitStatus::Ok) candidates.push_back(i);
   if (candidates.empty()) candidates = usable;
-  const int n = std::min<int>(std::max(1, count), candidates.size());
-  std::vector<int> frames;
-  for (int k = 0; k < n; ++k)
-    frames.push_back(candidates[static_cast<size_t>((k + offset) * candidates.size() / n)]);
-  return frames;
+  const int numKeys = std::min<int>(std::max(1, options.shapeFrames), candidates.size());
+  std::vector<int> keys;
+  for (int k = 0; k < numKeys; ++k)
+    keys.push_back(candidates[(2 * k + 1) * candidates.size() / (2 * numKeys)]);
+  return keys;
+}
+
+/// The last stage with E_c, as the shape's steps have it, for the key frames' poses: a shape
+/// grown towards the frame while its poses stay as the thinner body left them takes up their
+/// errors (a leg too long in a squat).
+std::vector<BodyFitStage> keyPoseStages(const BodyFitOptions& options)
+{
+  std::vector<BodyFitStage> stages(options.stages.end() - 1, options.stages.end());
+  stages.back().coverWeight = options.shapeCoverWeight;
+  return stages;
 }
 
 /// Beta alternating with the key frames' poses, from the fitter's current shape and `keyPoses`.
@@ -287,11 +303,7 @@ Eigen::VectorXd estimateShape(SequenceFitter& fitter,
                               std::vector<BodyPose> keyPoses, bool moveTranslations,
                               const BodyFitOptions& options, FitProgress& progress)
 {
-  // The key frames' poses with E_c as the shape's steps have it: a shape grown towards the
-  // frame while its poses stay as the thinner body left them takes up their errors (a leg too
-  // long in a squat).
-  std::vector<BodyFitStage> refine(options.stages.end() - 1, options.stages.end());
-  refine.back().coverWeight = options.shapeCoverWeight;
+  const std::vector<BodyFitStage> refine = keyPoseStages(options);
   for (int round = 0; round < options.shapeRounds; ++round)
   {
     fitter.fitShape(keySurfaces, keyPoses, 4, moveTranslations);
@@ -311,7 +323,7 @@ std::vector<Eigen::VectorXd> fitShapes(const BodyModel& model, SequenceFitter& f
                                        const BodyFitOptions& options,
                                        const std::vector<BodyFrameFit>& fits, FitProgress& progress)
 {
-  const std::vector<int> keys = spreadFrames(usable, options.shapeFrames, 0.5, fits);
+  const std::vector<int> keys = shapeKeyFrames(usable, options, fits);
   std::vector<const FrameSurface*> keySurfaces;
   std::vector<BodyPose> keyPoses;
   for (int i : keys)
@@ -321,8 +333,7 @@ std::vector<Eigen::VectorXd> fitShapes(const BodyModel& model, SequenceFitter& f
   }
   if (options.statureStart)
   {
-    std::vector<BodyFitStage> refine(options.stages.end() - 1, options.stages.end());
-    refine.back().coverWeight = options.shapeCoverWeight;
+    const std::vector<BodyFitStage> refine = keyPoseStages(options);
     const Eigen::VectorXd& beta = fitter.samples().beta();
     const double ratio = statureRatio(model, beta, keySurfaces, keyPoses);
     fitter.samples().setShape(scaledShape(model, beta.size(), ratio));
@@ -434,14 +445,12 @@ void flagIfUnexplained(double limit, BodyFrameFit& fit)
 /// Of the frames `own` only.
 void recoverPoorFits(SequenceFitter& fitter, FrameSurfaces& surfaces,
                      const std::vector<int>& usable, const std::vector<int>& own, double limit,
-                     BodyFitResult& result)
+                     std::vector<BodyFrameFit>& fits)
 {
-  std::vector<BodyFrameFit>& fits = result.frames;
   const std::vector<BodyPose> poses = okPoses(usable, -1, fits);
   for (int i : own)
   {
     if (fits[i].status != BodyFitStatus::Poor) continue;
-    fitter.samples().setShape(result.betaOf(i));
     fitter.refitFromPoses(surfaces.get(i), poses, fits[i]);
     flagIfUnexplained(limit, fits[i]);
     surfaces.release(i);
@@ -499,27 +508,26 @@ double typicalFrameDistance(const std::vector<BodyFrameFit>& fits)
   std::vector<double> distances;
   for (const BodyFrameFit& f : fits)
     if (f.status != BodyFitStatus::Failed) distances.push_back(f.frameDistance);
-  if (distances.empty()) return 0.0;
-  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
-  return distances[distances.size() / 2];
+  return distances.empty() ? 0.0 : upperMedian(std::move(distances));
 }
 
-/// Pass 2 forwards and backwards under each shape; the sequence keeps the shape under which its
-/// median frame distance is lower (BodyFitOptions::twoShapes). Each frame choosing
-/// its own shape explains it better still, but the later stages then meet bodies of two
-/// statures: on pjump the alignment lost 0.1 cm that way, in the very frames that changed shape
-/// (BENCHMARKS.md).
+/// Pass 2 forwards and backwards under each of `shapes`; the sequence keeps the shape under
+/// which its median frame distance is lower (BodyFitOptions::twoShapes), and the fitter is left
+/// with it. Each frame choosing its own shape explains it better still, but the later stages
+/// then meet bodies of two statures: on pjump the alignment lost 0.1 cm that way, in the very
+/// frames that changed shape (BENCHMARKS.md).
 void finalPasses(SequenceFitter& fitter, FrameSurfaces& surfaces, const Segment& segment,
-                 const BodyFitOptions& options,
+                 const BodyFitOptions& options, const std::vector<Eigen::VectorXd>& shapes,
                  const std::function<void(std::vector<BodyFrameFit>&)>& share,
                  BodyFitResult& result, FitProgress& progress)
 {
   const std::vector<BodyFrameFit> firstPass = result.frames;
   double best = std::numeric_limits<double>::infinity();
-  for (size_t s = 0; s < 1 + static_cast<size_t>(result.movedBeta.size() > 0); ++s)
+  size_t kept = 0;
+  for (size_t s = 0; s < shapes.size(); ++s)
   {
     std::vector<BodyFrameFit> fits = firstPass;
-    fitter.samples().setShape(s ? result.movedBeta : result.beta);
+    fitter.samples().setShape(shapes[s]);
     finalPass(fitter, surfaces, segment.forward, options, fits, progress);
     share(fits);
     backwardPass(fitter, surfaces, segment.backward, options, fits, progress);
@@ -527,9 +535,13 @@ void finalPasses(SequenceFitter& fitter, FrameSurfaces& surfaces, const Segment&
     const double distance = typicalFrameDistance(fits);
     if (!(distance < best)) continue;
     best = distance;
-    for (BodyFrameFit& f : fits) f.movedShape = s > 0;
+    kept = s;
     result.frames = std::move(fits);
   }
+  result.beta = shapes[kept];
+  result.movedShape = kept > 0;
+  if (shapes.size() > 1) result.otherBeta = shapes[1 - kept];
+  fitter.samples().setShape(result.beta);
 }
 } // namespace
 
@@ -572,13 +584,11 @@ BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
   std::vector<Eigen::VectorXd> betas =
       fitShapes(model, fitter, surfaces, usable, options, result.frames, fitProgress);
   if (shared) shareShapes(sharing, betas);
-  result.beta = betas[0];
-  if (betas.size() > 1) result.movedBeta = betas[1];
   fitter.setReachTolerance(options.reachTolerance);
-  finalPasses(fitter, surfaces, segment, options, share, result, fitProgress);
+  finalPasses(fitter, surfaces, segment, options, betas, share, result, fitProgress);
   const double limit = unexplainedLimit(options, result.frames);
   for (BodyFrameFit& fit : result.frames) flagIfUnexplained(limit, fit);
-  recoverPoorFits(fitter, surfaces, usable, segment.own, limit, result);
+  recoverPoorFits(fitter, surfaces, usable, segment.own, limit, result.frames);
   share(result.frames);
 
   // Frames that could not be fitted take their nearest fitted neighbour's pose.

@@ -47,7 +47,6 @@
 #include <Eigen/Geometry>
 
 #include <functional>
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -208,7 +207,6 @@ struct BodyFrameFit
   /// False when previousGap exceeds BodyFitOptions::neighbourGap: the frame was fitted as an
   /// unrelated pose, not from its predecessor alone.
   bool continuesPrevious = true;
-  bool movedShape = false; ///< fitted under BodyFitResult::movedBeta rather than its beta
 };
 
 /// The median frameDistance of the ok fits; nullopt with fewer than `minimumFits` of them.
@@ -221,15 +219,11 @@ double fittedRestPoseDistance(BodyFitStatus status, const BodyPose& pose);
 
 struct BodyFitResult
 {
-  /// The shape estimated with the key frames' poses fixed, and the one estimated with their
-  /// translations moving (BodyFitOptions::twoShapes; empty when not).
-  Eigen::VectorXd beta;
-  Eigen::VectorXd movedBeta;
-  /// The shape frame `k` is fitted under (the same for every frame of a sequence).
-  const Eigen::VectorXd& betaOf(size_t k) const
-  {
-    return k < frames.size() && frames[k].movedShape && movedBeta.size() ? movedBeta : beta;
-  }
+  Eigen::VectorXd beta; ///< the shape every frame is fitted under
+  /// BodyFitOptions::twoShapes: the estimate not kept (empty when only one was made), and
+  /// whether `beta` is the one estimated with the key frames' translations moving.
+  Eigen::VectorXd otherBeta;
+  bool movedShape = false;
   std::vector<BodyFrameFit> frames;
 };
 

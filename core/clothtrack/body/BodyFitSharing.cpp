@@ -12,7 +12,7 @@ namespace clothtrack
 namespace
 {
 /// Bumped with any change of the layout below.
-constexpr std::uint32_t kLayout = 0x43544232; // "CTB2"
+constexpr std::uint32_t kLayout = 0x43544231; // "CTB1"
 
 void putFit(ByteWriter& w, const BodyFrameFit& f)
 {
@@ -26,7 +26,6 @@ void putFit(ByteWriter& w, const BodyFrameFit& f)
   w.put(static_cast<std::int32_t>(f.extremitiesDetected));
   w.put(static_cast<std::int32_t>(f.extremitiesMatched));
   w.put(static_cast<std::uint8_t>(f.continuesPrevious));
-  w.put(static_cast<std::uint8_t>(f.movedShape));
   w.put(static_cast<std::uint32_t>(f.extremities.size()));
   for (const Vec3& e : f.extremities)
     for (int c = 0; c < 3; ++c) w.put(e[c]);
@@ -46,7 +45,6 @@ BodyFrameFit getFit(ByteReader& r)
   f.extremitiesDetected = r.get<std::int32_t>();
   f.extremitiesMatched = r.get<std::int32_t>();
   f.continuesPrevious = r.get<std::uint8_t>() != 0;
-  f.movedShape = r.get<std::uint8_t>() != 0;
   f.extremities.resize(r.get<std::uint32_t>());
   for (Vec3& e : f.extremities)
     for (int c = 0; c < 3; ++c) e[c] = r.get<double>();

@@ -610,7 +610,8 @@ public:
 private:
   /// One key frame's part of a shape step: its assignments (weighted by `weight`), and J^T W J,
   /// J^T W r added to `h`, `g` over beta's first k components and, when `h` has room for them,
-  /// the frame's translation (parameters k + 3 f .. k + 3 f + 2).
+  /// the frame's translation (parameters k + 3 f .. k + 3 f + 2). Without them, accumulated as
+  /// when the translations never moved, to the same bits.
   Assignments accumulateShapeFrame(const FrameSurface& frame, const BodyPose& pose,
                                    const BodyFitStage& stage, int k, double weight, int f,
                                    Eigen::MatrixXd& h, Eigen::VectorXd& g)
@@ -625,22 +626,24 @@ private:
     parallelFor(
         0, k, [&](int c) { columns[c] = (samples_.poseWithShapeStep(pose, c, kStep) - p) / kStep; },
         4);
-    for (int d = 0; moves && d < 3; ++d)
+    if (!moves)
+    {
+      a.accumulate(p, columns, h, g);
+      return a;
+    }
+    for (int d = 0; d < 3; ++d)
       columns[k + d] = Points::Zero(p.rows(), 3), columns[k + d].col(d).setOnes();
-    const int m = static_cast<int>(columns.size());
+    const int m = k + 3;
     Eigen::MatrixXd hf = Eigen::MatrixXd::Zero(m, m);
     Eigen::VectorXd gf = Eigen::VectorXd::Zero(m);
     a.accumulate(p, columns, hf, gf);
     h.topLeftCorner(k, k) += hf.topLeftCorner(k, k);
     g.head(k) += gf.head(k);
-    if (moves)
-    {
-      const int t = k + 3 * f;
-      h.block(0, t, k, 3) += hf.topRightCorner(k, 3);
-      h.block(t, 0, 3, k) += hf.bottomLeftCorner(3, k);
-      h.block<3, 3>(t, t) += hf.bottomRightCorner<3, 3>();
-      g.segment<3>(t) += gf.tail<3>();
-    }
+    const int t = k + 3 * f;
+    h.block(0, t, k, 3) += hf.topRightCorner(k, 3);
+    h.block(t, 0, 3, k) += hf.bottomLeftCorner(3, k);
+    h.block<3, 3>(t, t) += hf.bottomRightCorner<3, 3>();
+    g.segment<3>(t) += gf.tail<3>();
     return a;
   }
 

@@ -116,7 +116,7 @@ BodyStageResult fitBodyAndLandmarks(const BodyModel& model, const FrameSource& f
       {
         const BodyFrameFit& fit = out.body.frames[k];
         std::vector<OrientedPoint> bodyPoints =
-            orientedLandmarks(model, model.posed(out.body.betaOf(k), fit.pose));
+            orientedLandmarks(model, model.posed(out.body.beta, fit.pose));
         std::vector<TransferredLandmark> transferred(bodyPoints.size());
         const FramePtr frame = fit.status == BodyFitStatus::Failed ? FramePtr() : frames.frame(k);
         if (frame)

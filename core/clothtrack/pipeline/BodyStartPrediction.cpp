@@ -16,12 +16,11 @@ FittedBodies fittedBodies(const BodyModel& model, const BodyFitResult& body, int
   FittedBodies bodies;
   for (const BodyFrameFit& f : body.frames)
   {
-    bodies.skeletons.push_back(posedSkeleton(model, body.betaOf(bodies.skeletons.size()), f.pose));
+    bodies.skeletons.push_back(posedSkeleton(model, body.beta, f.pose));
     bodies.trusted.push_back(f.status == BodyFitStatus::Ok);
   }
   if (templateFrame >= 0 && templateFrame < static_cast<int>(body.frames.size()))
-    bodies.templateBody =
-        model.posed(body.betaOf(templateFrame), body.frames[templateFrame].pose).V;
+    bodies.templateBody = model.posed(body.beta, body.frames[templateFrame].pose).V;
   bodies.weights = model.weights;
   return bodies;
 }
