@@ -50,6 +50,8 @@ ctOptionDefinition(ctBodyFit, RegisterFrames, bool, Options.registerFrames);
 ctOptionDefinition(ctBodyFit, StatureStart, bool, Options.fit.statureStart);
 ctOptionDefinition(ctBodyFit, LimbRestarts, bool, Options.fit.limbRestarts);
 ctOptionDefinition(ctBodyFit, TwoShapes, bool, Options.fit.twoShapes);
+ctOptionClampDefinition(ctBodyFit, SameShapeTolerance, double, Options.fit.sameShapeTolerance, 0.0,
+                        1.0);
 
 ctBodyFit::ctBodyFit()
 {
@@ -244,6 +246,7 @@ int ctBodyFit::RequestData(vtkInformation*, vtkInformationVector** inputVector,
       bodies->GetFieldData()->AddArray(beta);
     }
     addFieldValue(bodies->GetFieldData(), "MovedShape", static_cast<int>(fit.movedShape));
+    addFieldValue(bodies->GetFieldData(), "ShapeGap", fit.shapeGap);
     StatusTable table;
     const std::vector<double> restPoses = restPoseDistances(fit);
     for (int k = 0; k < n; ++k)
@@ -300,4 +303,5 @@ void ctBodyFit::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StatureStart: " << this->Options.fit.statureStart << "\n";
   os << indent << "LimbRestarts: " << this->Options.fit.limbRestarts << "\n";
   os << indent << "TwoShapes: " << this->Options.fit.twoShapes << "\n";
+  os << indent << "SameShapeTolerance: " << this->Options.fit.sameShapeTolerance << "\n";
 }

@@ -20,8 +20,10 @@
  * distance from the frame to the body, m) and PreviousGap (mean surface distance to the frame
  * before, m: above 6 cm the frame is fitted as an unrelated pose); the collection's field
  * data holds ShapeCoefficients (beta, the shape kept), MovedShape (1 when that is the one
- * estimated with the key frames' translations moving) and OtherShapeCoefficients (the estimate
- * not kept; empty with TwoShapes off).
+ * estimated with the key frames' translations moving), OtherShapeCoefficients (the estimate
+ * not kept; empty with TwoShapes off) and ShapeGap (the largest distance between the two
+ * shapes' rest-pose vertices, m; below SameShapeTolerance pass 2 ran under the first only;
+ * -1 with TwoShapes off).
  * Output port 1: vtkMultiBlockDataSet, the oriented landmarks of each frame (as
  * ctLandmarkTransfer: Valid, Direction, LandmarkId, LandmarkName, Offset, FrameFace,
  * FrameBarycentric; field data FoundFraction and RestPoseDistance, which lets
@@ -87,6 +89,10 @@ public:
   virtual void SetTwoShapes(bool value);
   virtual bool GetTwoShapes();
   vtkBooleanMacro(TwoShapes, bool);
+  /// Two shapes whose rest-pose bodies lie this close at every vertex (metres) are one body:
+  /// pass 2 runs under the first only (0.01 by default; 0: always under both).
+  virtual void SetSameShapeTolerance(double value);
+  virtual double GetSameShapeTolerance();
   /// Key frames used to estimate the shape.
   virtual void SetShapeFrames(int value);
   virtual int GetShapeFrames();

@@ -37,7 +37,8 @@ void writeBodyFitJson(const std::string& path, const std::string& modelPath,
   const nlohmann::json head = {{"model", modelPath},
                                {"beta", coefficientsJson(stage.body.beta)},
                                {"moved_shape", stage.body.movedShape},
-                               {"other_beta", coefficientsJson(stage.body.otherBeta)}};
+                               {"other_beta", coefficientsJson(stage.body.otherBeta)},
+                               {"shape_gap_m", stage.body.shapeGap}};
   std::string text = head.dump(1);
   text.pop_back(); // the closing brace: the frames follow
   AtomicTextFile file(path);
@@ -56,6 +57,7 @@ void writeBodyStage(const std::string& path, const nlohmann::json& key,
                           {"beta", coefficientsJson(stage.body.beta)},
                           {"moved_shape", stage.body.movedShape},
                           {"other_beta", coefficientsJson(stage.body.otherBeta)},
+                          {"shape_gap_m", stage.body.shapeGap},
                           {"frames", stage.landmarks.size()}})
               .dump()
        << "\n";
@@ -88,6 +90,7 @@ std::optional<BodyStage> readBodyStage(const std::string& path, const nlohmann::
     out.body.beta = coefficients(head.at("beta"));
     out.body.movedShape = head.at("moved_shape").get<bool>();
     out.body.otherBeta = coefficients(head.at("other_beta"));
+    out.body.shapeGap = head.at("shape_gap_m").get<double>();
     const auto frames = head.at("frames").get<size_t>();
     auto offset = static_cast<std::int64_t>(in.tellg());
     while (out.lineOffsets.size() < frames && std::getline(in, line))

@@ -93,6 +93,9 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "no-two-shapes", po::bool_switch(),
       "body fit: estimate the shape one way only, with the key frames' poses fixed (its pass 2 "
       "runs once, not under two shapes)")(
+      "same-shape-tolerance", po::value(&s.sameShapeTolerance)->default_value(s.sameShapeTolerance),
+      "body fit: two shapes whose rest-pose bodies lie this close at every vertex are one, and "
+      "pass 2 runs under the first only (m; 0: always under both)")(
       "no-limb-restarts", po::bool_switch(),
       "body fit: do not start frames unrelated to their predecessor again with their limbs at "
       "rest and aimed at the extremities their fit leaves unpaired")(
@@ -175,6 +178,7 @@ void check(const AlignSettings& s)
   const PatchCorrespondenceOptions& patches = s.patches;
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
   if (s.bodyFitOverlap < 1) throw UsageError{"--body-fit-overlap must be 1 or more"};
+  if (!(s.sameShapeTolerance >= 0)) throw UsageError{"--same-shape-tolerance must be 0 or more"};
   if (s.chains < 0 || s.chains == 1) throw UsageError{"--chains must be 2 or more"};
   if (!(s.frameMemoryMB >= 0)) throw UsageError{"--frame-memory must be 0 or more (MB)"};
   if (s.factorBackend != "block" && s.factorBackend != "cholmod")

@@ -70,6 +70,8 @@ struct AlignSettings
   /// Body fit: the shape estimated two ways, the better kept (BodyFitOptions::
   /// twoShapes); off with --no-two-shapes.
   bool twoShapes = true;
+  /// Body fit: two shapes this close at rest are one (BodyFitOptions::sameShapeTolerance, m).
+  double sameShapeTolerance = BodyFitOptions{}.sameShapeTolerance;
   /// Under mpirun, each process fits the body to a segment of the sequence, tracking
   /// bodyFitOverlap frames of its neighbours' segments first (BodyFitSharing). Off: the first
   /// process fits the whole sequence, and the result is one process's bit for bit.

@@ -143,7 +143,9 @@ nlohmann::json bodyStageKey(const BodyStageOptions& o)
           {"weights",
            {f.temporalWeight, f.rootTemporalWeight, f.legTemporalWeight, f.posePriorWeight,
             f.hingeStiffness, f.shapePriorWeight}},
-          {"shape", {f.shapeComponents, f.shapeFrames, f.shapeRounds, f.statureStart, f.twoShapes}},
+          {"shape",
+           {f.shapeComponents, f.shapeFrames, f.shapeRounds, f.statureStart, f.twoShapes,
+            f.sameShapeTolerance}},
           {"samples", f.samples},
           {"robust_scale", f.robustScale},
           {"cover", {f.shapeCoverWeight, f.coverScale}},
@@ -184,6 +186,7 @@ void runBodyStage(Run& run, bool together)
   options.fit.statureStart = s.statureStart;
   options.fit.limbRestarts = s.limbRestarts;
   options.fit.twoShapes = s.twoShapes;
+  options.fit.sameShapeTolerance = s.sameShapeTolerance;
   options.keepBodyLandmarks = false; // only the seeds are used: a long sequence stays small
   run.landmarkKey = {{"files", run.input.files},  {"model", s.modelPath},
                      {"up", s.sequence.up},       {"unit", s.sequence.unit},

@@ -76,6 +76,10 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
       "no-two-shapes", po::bool_switch(),
       "estimate the body shape one way only, with the key frames' poses fixed (pass 2 runs once, "
       "not under two shapes)")(
+      "same-shape-tolerance",
+      po::value(&fit.sameShapeTolerance)->default_value(fit.sameShapeTolerance),
+      "two shapes whose rest-pose bodies lie this close at every vertex are one, and pass 2 "
+      "runs under the first only (m; 0: always under both)")(
       "no-limb-restarts", po::bool_switch(),
       "do not start frames unrelated to their predecessor again with their limbs at rest and "
       "aimed at the extremities their fit leaves unpaired");
@@ -91,6 +95,8 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
   if (fit.samples < 50) throw UsageError{"--samples must be at least 50"};
   if (fit.shapeFrames < 1) throw UsageError{"--shape-frames must be at least 1"};
+  if (!(fit.sameShapeTolerance >= 0.0))
+    throw UsageError{"--same-shape-tolerance must be 0 or more"};
   resolveAutomatic(s.sequence, s.input);
   return s;
 }
@@ -246,6 +252,7 @@ int runBodyFit(const Args& args)
                             {"beta", coefficientsJson(result.beta)},
                             {"moved_shape", result.movedShape},
                             {"other_beta", coefficientsJson(result.otherBeta)},
+                            {"shape_gap_m", result.shapeGap},
                             {"landmarks_found_fraction", foundFraction},
                             {"body_inside_fraction", insideFraction},
                             {"seconds_total", secondsSince(start)},

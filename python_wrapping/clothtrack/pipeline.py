@@ -90,7 +90,8 @@ def _as_sequence(frames, frame_rate):
 _STAGE_KEYWORDS = {
     "body": ("samples", "temporal_weight", "root_temporal_weight", "leg_temporal_weight",
              "leg_raise_start", "stature_start", "outside_tolerance", "inside_tolerance",
-             "register_frames", "limb_restarts", "two_shapes"),
+             "register_frames", "limb_restarts", "two_shapes",
+             "same_shape_tolerance"),
     "correspondence": ("epsilon", "minimum_radius", "maximum_radius", "minimum_seed_consensus",
                        "minimum_shell_area", "persistence"),
     "fit": ("solver_tolerance", "intermediate_tolerance", "refactor_steps", "nearest_reuse",

@@ -268,6 +268,23 @@ TEST(BodyFit, KeepsTheShapeThatExplainsTheFramesBetter)
   EXPECT_LT(std::abs(movedHeight - truth), std::abs(fixedHeight - truth));
   EXPECT_LT(twoDistance, oneDistance);
   EXPECT_LT(twoSurface, oneSurface);
+
+  // Shapes within sameShapeTolerance of each other at rest are one body: pass 2 runs under the
+  // first only, which gives the fit without the second shape, that shape kept as the other.
+  EXPECT_LT(one.shapeGap, 0.0);
+  EXPECT_GT(two.shapeGap, both.sameShapeTolerance); // these two were both fitted
+  BodyFitOptions oneBody = both;
+  oneBody.sameShapeTolerance = 1.0;
+  const BodyFitResult same = fitBodySequence(builtinBodyModel(), frames, oneBody);
+  EXPECT_FALSE(same.movedShape);
+  EXPECT_EQ(same.beta, one.beta);
+  EXPECT_EQ(same.otherBeta, two.beta);
+  EXPECT_EQ(same.shapeGap, two.shapeGap);
+  for (size_t i = 0; i < frames.size(); ++i)
+  {
+    EXPECT_EQ(same.frames[i].pose.rotations, one.frames[i].pose.rotations) << "frame " << i;
+    EXPECT_EQ(same.frames[i].frameDistance, one.frames[i].frameDistance) << "frame " << i;
+  }
 }
 
 TEST(BodyFit, ShortManInWideTrousersFacesForward)
@@ -647,6 +664,9 @@ TEST(BodyFit, FilterOutputsBodiesLandmarksAndStatus)
   ASSERT_EQ(bodies->GetNumberOfBlocks(), 4u);
   EXPECT_EQ(bodies->GetFieldData()->GetArray("ShapeCoefficients")->GetNumberOfTuples(),
             builtinBodyModel().numShapeComponents());
+  EXPECT_EQ(bodies->GetFieldData()->GetArray("OtherShapeCoefficients")->GetNumberOfTuples(),
+            builtinBodyModel().numShapeComponents());
+  EXPECT_GT(bodies->GetFieldData()->GetArray("ShapeGap")->GetTuple1(0), 0.0);
   auto* body = vtkPolyData::SafeDownCast(bodies->GetBlock(1));
   ASSERT_NE(body, nullptr);
   EXPECT_EQ(body->GetNumberOfPoints(), builtinBodyModel().numVertices());

@@ -502,6 +502,29 @@ void shareShapes(const BodyFitSharing& sharing, std::vector<Eigen::VectorXd>& sh
   read.expectEnd();
 }
 
+/// The largest distance between the rest-pose vertices of shapes `a` and `b`.
+double restShapeGap(const BodyModel& model, const Eigen::VectorXd& a, const Eigen::VectorXd& b)
+{
+  Points first, second, joints;
+  model.shape(a, first, joints);
+  model.shape(b, second, joints);
+  return (first - second).rowwise().norm().maxCoeff();
+}
+
+/// Drops the second of two `shapes` when they are one body (BodyFitOptions::sameShapeTolerance),
+/// keeping it as the result's other shape; returns whether it was dropped. Every process of a
+/// shared fit holds the same shapes, so all drop it or none.
+bool dropSameShape(const BodyModel& model, const BodyFitOptions& options,
+                   std::vector<Eigen::VectorXd>& shapes, BodyFitResult& result)
+{
+  if (shapes.size() < 2) return false;
+  result.shapeGap = restShapeGap(model, shapes[0], shapes[1]);
+  if (!(result.shapeGap < options.sameShapeTolerance)) return false;
+  result.otherBeta = shapes[1];
+  shapes.resize(1);
+  return true;
+}
+
 /// The median frame distance of the frames that could be fitted.
 double typicalFrameDistance(const std::vector<BodyFrameFit>& fits)
 {
@@ -585,6 +608,8 @@ BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
       fitShapes(model, fitter, surfaces, usable, options, result.frames, fitProgress);
   if (shared) shareShapes(sharing, betas);
   fitter.setReachTolerance(options.reachTolerance);
+  if (dropSameShape(model, options, betas, result))
+    fitProgress.advance(segment.forward.size() + segment.backward.size());
   finalPasses(fitter, surfaces, segment, options, betas, share, result, fitProgress);
   const double limit = unexplainedLimit(options, result.frames);
   for (BodyFrameFit& fit : result.frames) flagIfUnexplained(limit, fit);
