@@ -114,9 +114,9 @@ struct BodyFitOptions
   bool twoShapes = true;
   /// Two shapes whose rest-pose bodies lie within this of each other at every vertex (metres)
   /// are one body under the clothing: pass 2 runs under the first only, and the sequence keeps
-  /// it. The median frame distances of two such shapes differ by a few hundredths of a
-  /// millimetre (samba's, 6.3 mm apart: 42.27 against 42.22 mm), a choice not worth a second
-  /// pass 2 (15 % of samba's alignment time). 0: pass 2 always runs under both.
+  /// it. Samba's two shapes, 6.3 mm apart, give median frame distances of 42.27 and 42.22 mm:
+  /// a choice not worth a second pass 2 (15 % of samba's alignment time). 0: pass 2 always runs
+  /// under both.
   double sameShapeTolerance = 0.01;
   /// The shape's estimation starts from the mean body scaled, along the shape space, to the
   /// stature the key frames suggest: the median over them of the frame's height over the height
