@@ -79,8 +79,8 @@ public:
   virtual void SetStatureStart(bool value);
   virtual bool GetStatureStart();
   vtkBooleanMacro(StatureStart, bool);
-  /// Start frames unrelated to their predecessor again with their limbs at rest and aimed at
-  /// the extremities their fit leaves unpaired (on by default).
+  /// Start frames unrelated to their predecessor again with their limbs at rest, aimed at the
+  /// extremities their fit leaves unpaired, and swapped in pairs (on by default).
   virtual void SetLimbRestarts(bool value);
   virtual bool GetLimbRestarts();
   vtkBooleanMacro(LimbRestarts, bool);

@@ -64,8 +64,8 @@ struct AlignSettings
   /// Body fit: the shape's estimation starts at the stature the frames suggest
   /// (BodyFitOptions::statureStart).
   bool statureStart = false;
-  /// Body fit: frames unrelated to their predecessor are also started with their limbs at rest
-  /// and aimed at unpaired extremities (BodyFitOptions::limbRestarts).
+  /// Body fit: frames unrelated to their predecessor are also started with their limbs at rest,
+  /// aimed at unpaired extremities and swapped in pairs (BodyFitOptions::limbRestarts).
   bool limbRestarts = true;
   /// Body fit: the shape estimated two ways, the better kept (BodyFitOptions::
   /// twoShapes); off with --no-two-shapes.

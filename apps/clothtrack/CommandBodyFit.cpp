@@ -81,8 +81,8 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
       "two shapes whose rest-pose bodies lie this close at every vertex are one, and pass 2 "
       "runs under the first only (m; 0: always under both)")(
       "no-limb-restarts", po::bool_switch(),
-      "do not start frames unrelated to their predecessor again with their limbs at rest and "
-      "aimed at the extremities their fit leaves unpaired");
+      "do not start frames unrelated to their predecessor again with their limbs at rest, "
+      "aimed at the extremities their fit leaves unpaired, or swapped in pairs");
   addSequenceOptions(options, s.sequence);
   po::positional_options_description positional;
   positional.add("input", 1);

@@ -149,10 +149,12 @@ struct BodyFitOptions
   double legRaiseStart = 0.6;
   /// A frame that does not continue its predecessor (neighbourGap) is also started again, in the
   /// first and the final pass, with each limb back in the rest pose and with each limb aimed at
-  /// a detected extremity its fit leaves unpaired; a start is kept where it explains the frame
-  /// better both ways. Extremities are paired by proximity, so limbs that crossed to the other
-  /// side's hand or foot stay crossed, and a leg kicked out lies beyond the pairing gate of a
-  /// foot hanging down (BENCHMARKS.md, "collections of unrelated poses: limbs started again").
+  /// a detected extremity its fit leaves unpaired, and with both arms, then both legs, aimed at
+  /// each other's extremity; a start is kept where it explains the frame better both ways and
+  /// does not put more of the arms inside the torso. Extremities are paired by proximity, so
+  /// limbs that crossed to the other side's hand or foot stay crossed until swapped, and a leg
+  /// kicked out lies beyond the pairing gate of a foot hanging down (BENCHMARKS.md, "collections
+  /// of unrelated poses: limbs started again" and "crossed limbs").
   bool limbRestarts = true;
   int headings = 8; ///< headings tried when (re)initialising
   /// First-frame fits facing more than 90 degrees apart whose scores are within this factor are

@@ -57,6 +57,8 @@ public:
   int numSamples() const { return numSamples_; }
   int numPoints() const { return static_cast<int>(vertices_.size()); }
   int extremityPoint(int label) const { return numSamples_ + label; }
+  /// The joint that moves point i most (its largest skinning weight).
+  int dominantJointOf(int i) const { return dominantJoint(model_, vertices_[i]); }
   /// Points that may stand for an extremity: its tip, and for a foot the whole foot.
   const std::vector<int>& extremityRegion(int label) const { return regions_[label]; }
   const Eigen::VectorXd& beta() const { return beta_; }

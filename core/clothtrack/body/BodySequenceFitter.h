@@ -22,6 +22,13 @@ public:
       : options_(options), samples_(model, options.samples),
         priorWeights_(jointPriorWeights(options)), reachTolerance_(options.reachTolerance)
   {
+    for (int i = 0; i < samples_.numSamples(); ++i)
+    {
+      const int j = samples_.dominantJointOf(i);
+      if (j == Pelvis || j == Spine1 || j == Spine2 || j == Spine3) torsoSamples_.push_back(i);
+      if (j == LeftShoulder || j == LeftElbow || j == RightShoulder || j == RightElbow)
+        armSamples_.push_back(i);
+    }
   }
 
   BodySamples& samples() { return samples_; }
@@ -541,6 +548,30 @@ public:
   {
     refitWithLimbsAtRest(frame, fit);
     refitWithLimbsAimed(frame, fit);
+    refitWithPairsSwapped(frame, fit);
+  }
+
+  /// Share of the arm samples (upper arms and forearms) lying more than kInsideTorso below the
+  /// surface at their nearest torso sample: arms that cross through the chest to the other
+  /// side's hands. An unclothed frame is explained about as closely by them as by arms that do
+  /// not cross, so the two-sided score alone cannot refuse them.
+  double armsInsideTorso(const BodyPose& pose) const
+  {
+    const std::vector<int>& torso = torsoSamples_;
+    const std::vector<int>& arms = armSamples_;
+    if (torso.empty() || arms.empty()) return 0.0;
+    Points normals;
+    const Points p = samples_.pose(pose, &normals);
+    Points torsoPoints(torso.size(), 3);
+    for (size_t t = 0; t < torso.size(); ++t) torsoPoints.row(t) = p.row(torso[t]);
+    const PointIndex index(torsoPoints);
+    int inside = 0;
+    for (int i : arms)
+    {
+      const int t = torso[index.nearest(p.row(i).transpose()).index];
+      if ((p.row(i) - p.row(t)).dot(normals.row(t)) < -kInsideTorso) ++inside;
+    }
+    return static_cast<double>(inside) / arms.size();
   }
 
   /// Gauss-Newton steps on beta with the key frames' joint rotations fixed, and their
@@ -669,7 +700,17 @@ private:
     other.pose = start;
     other.energy = fitPose(frame, other.pose, nullptr, options_.stages, options_.extremityGate,
                            &other.extremitiesMatched);
-    if (twoSidedScore(frame, other.pose) < twoSidedScore(frame, fit.pose)) adopt(frame, other, fit);
+    if (explainsBetter(frame, other.pose, fit.pose)) adopt(frame, other, fit);
+  }
+
+  /// A restart's fit replaces the current one when its two-sided score is lower, unless its arms
+  /// go through the torso where the current ones do not (kArmsCrossedShare more of their
+  /// samples inside it).
+  bool explainsBetter(const FrameSurface& frame, const BodyPose& candidate,
+                      const BodyPose& current) const
+  {
+    if (armsInsideTorso(candidate) - armsInsideTorso(current) > kArmsCrossedShare) return false;
+    return twoSidedScore(frame, candidate) < twoSidedScore(frame, current);
   }
 
   void refitWithLimbsAtRest(const FrameSurface& frame, BodyFrameFit& fit)
@@ -707,6 +748,27 @@ private:
     }
   }
 
+  /// Both arms, then both legs, aimed each at the extremity its partner is paired with: a pair
+  /// that crossed through the body to the other side's hands or feet stays paired by proximity,
+  /// so neither limb is free for the aimed restarts.
+  void refitWithPairsSwapped(const FrameSurface& frame, BodyFrameFit& fit)
+  {
+    for (int first : {0, 2})
+    {
+      std::array<int, kNumExtremities> match;
+      matchExtremities(samples_.pose(fit.pose), samples_, samples_.extremityRoots(fit.pose),
+                       frame.extremities, options_.extremityGate, options_.handGate,
+                       reachTolerance_, match);
+      const Limb& a = kLimbs[first];
+      const Limb& b = kLimbs[first + 1];
+      if (match[a.extremity] < 0 || match[b.extremity] < 0) continue;
+      BodyPose start = fit.pose;
+      if (aimLimb(a, frame.extremities[match[b.extremity]], start) &&
+          aimLimb(b, frame.extremities[match[a.extremity]], start))
+        refitFrom(frame, start, fit);
+    }
+  }
+
   /// Straightens `limb` below its root and turns the root so that the limb points at
   /// `target`; false when the target is out of the limb's reach.
   bool aimLimb(const Limb& limb, const Vec3& target, BodyPose& pose) const
@@ -727,6 +789,10 @@ private:
     // A leg aimed backwards lets a body facing the wrong way reach a foot kicked forward.
     return limb.extremity < 3 || pose.rotations(limb.root, 0) <= kLargestHipExtension;
   }
+  /// Depth (m) below the torso's surface from which an arm sample counts as inside it.
+  static constexpr double kInsideTorso = 0.02;
+  /// Change in the share of arm samples inside the torso that tells crossed arms from others.
+  static constexpr double kArmsCrossedShare = 0.1;
   /// Hip extension (radians, a positive rotation about X) beyond which a leg is not aimed.
   static constexpr double kLargestHipExtension = 0.6;
   /// A limb is aimed only at a detection within this multiple of its length (plus 3 cm, as
@@ -735,7 +801,8 @@ private:
 
   const BodyFitOptions& options_;
   BodySamples samples_;
-  Eigen::VectorXd priorWeights_; ///< per rotation parameter
+  Eigen::VectorXd priorWeights_;               ///< per rotation parameter
+  std::vector<int> torsoSamples_, armSamples_; ///< by their dominant joints (armsInsideTorso)
   double reachTolerance_;
 };
 
