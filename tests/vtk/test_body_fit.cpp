@@ -444,13 +444,10 @@ TEST(BodyFit, CountsArmsThatCrossThroughTheTorso)
   EXPECT_GT(through, 0.3);
 }
 
-TEST(BodyFit, UncrossesLegsInAnUnrelatedPose)
+/// Two unrelated poses of an unclothed man (beta_0 = 0.8): a standing one, and one turned half
+/// round with the left leg raised forward and out; in the order given by `raisedFirst`.
+Sequence twoUnrelatedPoses(bool raisedFirst)
 {
-  // Two unrelated poses of an unclothed man; in the second, turned half round, the left leg is
-  // raised forward and out. Fitted from the first pose, the body raised its right leg to the
-  // left foot and stood its left leg in the right one (20.7 cm of joint error); each foot was
-  // paired with a detection, so no limb was free for the aimed restarts. Aiming both legs at
-  // each other's foot uncrosses them.
   auto pose =
       [](double heading, Vec3 translation, std::initializer_list<std::pair<Joint, Vec3>> rotations)
   {
@@ -460,34 +457,35 @@ TEST(BodyFit, UncrossesLegsInAnUnrelatedPose)
     for (const auto& [joint, r] : rotations) p.rotations.row(joint) = r.transpose();
     return p;
   };
-  const std::vector<BodyPose> poses = {pose(0.11, {0.43, 0.0, 0.40},
-                                            {{Spine1, {-0.11, -0.02, 0.01}},
-                                             {Spine2, {0.21, -0.06, 0.0}},
-                                             {Neck, {-0.29, 0.03, 0.0}},
-                                             {LeftShoulder, {-0.53, -0.01, 0.91}},
-                                             {LeftElbow, {-0.08, 0, 0}},
-                                             {RightShoulder, {0.09, 0.21, -0.23}},
-                                             {RightElbow, {-0.73, 0, 0}},
-                                             {LeftHip, {-0.18, -0.17, -0.12}},
-                                             {LeftKnee, {0.44, 0, 0}},
-                                             {LeftAnkle, {-0.36, 0, 0}},
-                                             {RightHip, {-0.26, -0.01, 0.11}},
-                                             {RightKnee, {0.14, 0, 0}},
-                                             {RightAnkle, {-0.05, 0, 0}}}),
-                                       pose(-2.73, {-0.49, 0.0, 0.34},
-                                            {{Spine1, {-0.04, 0.03, 0.17}},
-                                             {Spine2, {-0.05, -0.05, 0.0}},
-                                             {Neck, {0.17, 0.38, 0.0}},
-                                             {LeftShoulder, {-0.01, 0.13, -1.03}},
-                                             {LeftElbow, {-1.23, 0, 0}},
-                                             {RightShoulder, {-0.35, -0.26, 0.43}},
-                                             {RightElbow, {-1.77, 0, 0}},
-                                             {LeftHip, {-0.82, 0.12, -0.44}},
-                                             {LeftKnee, {0.23, 0, 0}},
-                                             {LeftAnkle, {-0.04, 0, 0}},
-                                             {RightHip, {0.26, 0.15, 0.40}},
-                                             {RightKnee, {0.08, 0, 0}},
-                                             {RightAnkle, {-0.16, 0, 0}}})};
+  std::vector<BodyPose> poses = {pose(0.11, {0.43, 0.0, 0.40},
+                                      {{Spine1, {-0.11, -0.02, 0.01}},
+                                       {Spine2, {0.21, -0.06, 0.0}},
+                                       {Neck, {-0.29, 0.03, 0.0}},
+                                       {LeftShoulder, {-0.53, -0.01, 0.91}},
+                                       {LeftElbow, {-0.08, 0, 0}},
+                                       {RightShoulder, {0.09, 0.21, -0.23}},
+                                       {RightElbow, {-0.73, 0, 0}},
+                                       {LeftHip, {-0.18, -0.17, -0.12}},
+                                       {LeftKnee, {0.44, 0, 0}},
+                                       {LeftAnkle, {-0.36, 0, 0}},
+                                       {RightHip, {-0.26, -0.01, 0.11}},
+                                       {RightKnee, {0.14, 0, 0}},
+                                       {RightAnkle, {-0.05, 0, 0}}}),
+                                 pose(-2.73, {-0.49, 0.0, 0.34},
+                                      {{Spine1, {-0.04, 0.03, 0.17}},
+                                       {Spine2, {-0.05, -0.05, 0.0}},
+                                       {Neck, {0.17, 0.38, 0.0}},
+                                       {LeftShoulder, {-0.01, 0.13, -1.03}},
+                                       {LeftElbow, {-1.23, 0, 0}},
+                                       {RightShoulder, {-0.35, -0.26, 0.43}},
+                                       {RightElbow, {-1.77, 0, 0}},
+                                       {LeftHip, {-0.82, 0.12, -0.44}},
+                                       {LeftKnee, {0.23, 0, 0}},
+                                       {LeftAnkle, {-0.04, 0, 0}},
+                                       {RightHip, {0.26, 0.15, 0.40}},
+                                       {RightKnee, {0.08, 0, 0}},
+                                       {RightAnkle, {-0.16, 0, 0}}})};
+  if (raisedFirst) std::swap(poses[0], poses[1]);
   Sequence collection;
   collection.beta = Eigen::VectorXd::Zero(builtinBodyModel().numShapeComponents());
   collection.beta[0] = 0.8;
@@ -496,6 +494,26 @@ TEST(BodyFit, UncrossesLegsInAnUnrelatedPose)
     collection.poses.push_back(p);
     collection.captures.push_back(builtinBodyModel().posed(collection.beta, p));
   }
+  return collection;
+}
+
+/// Distances (m) of frame `frame`'s fitted ankles from the true ones.
+std::pair<double, double> ankleErrors(const BodyFitResult& fit, const Sequence& truth, int frame)
+{
+  Points fitted, actual;
+  builtinBodyModel().posed(fit.beta, fit.frames[frame].pose, &fitted);
+  builtinBodyModel().posed(truth.beta, truth.poses[frame], &actual);
+  return {(fitted.row(LeftAnkle) - actual.row(LeftAnkle)).norm(),
+          (fitted.row(RightAnkle) - actual.row(RightAnkle)).norm()};
+}
+
+TEST(BodyFit, UncrossesLegsInAnUnrelatedPose)
+{
+  // Fitted from the standing pose, the body raised its right leg to the left foot and stood its
+  // left leg in the right one (20.7 cm of joint error); each foot was paired with a detection,
+  // so no limb was free for the aimed restarts. Aiming both legs at each other's foot uncrosses
+  // them.
+  const Sequence collection = twoUnrelatedPoses(false);
   BodyFitOptions options;
   options.shapeFrames = 2;
   const BodyFitResult fit =
@@ -503,17 +521,30 @@ TEST(BodyFit, UncrossesLegsInAnUnrelatedPose)
   ASSERT_FALSE(fit.frames[1].continuesPrevious);
   double joints, surface, worst;
   fitErrors(fit, collection, Eigen::Matrix3d::Identity(), joints, surface, &worst, 1);
-  Points fittedJoints, trueJoints;
-  builtinBodyModel().posed(fit.beta, fit.frames[1].pose, &fittedJoints);
-  builtinBodyModel().posed(collection.beta, poses[1], &trueJoints);
-  const double leftAnkle = (fittedJoints.row(LeftAnkle) - trueJoints.row(LeftAnkle)).norm();
-  const double rightAnkle = (fittedJoints.row(RightAnkle) - trueJoints.row(RightAnkle)).norm();
+  const auto [leftAnkle, rightAnkle] = ankleErrors(fit, collection, 1);
   std::printf("[ measured ] legs of an unrelated pose: joint error %.2f cm, ankles %.2f and "
               "%.2f cm\n",
               100 * joints, 100 * leftAnkle, 100 * rightAnkle);
   EXPECT_LT(leftAnkle, 0.08);
   EXPECT_LT(rightAnkle, 0.08);
   EXPECT_LT(joints, 0.04);
+}
+
+TEST(BodyFit, StartsTheLimbsOfACollectionsFirstFrameAgain)
+{
+  // The same two poses, the raised leg first. The first frame has no predecessor; its successor
+  // does not continue it, so its limbs are started again like any unrelated frame's.
+  const Sequence collection = twoUnrelatedPoses(true);
+  BodyFitOptions options;
+  options.shapeFrames = 2;
+  const BodyFitResult fit =
+      fitBodySequence(builtinBodyModel(), pointers(collection.captures), options);
+  ASSERT_FALSE(fit.frames[1].continuesPrevious);
+  const auto [leftAnkle, rightAnkle] = ankleErrors(fit, collection, 0);
+  std::printf("[ measured ] legs of a collection's first frame: ankles %.2f and %.2f cm\n",
+              100 * leftAnkle, 100 * rightAnkle);
+  EXPECT_LT(leftAnkle, 0.08);
+  EXPECT_LT(rightAnkle, 0.08);
 }
 
 TEST(BodyFit, GrowsToFillADeeperTorso)

@@ -380,8 +380,9 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
 {
   const std::vector<BodyFitStage> finalStages(options.stages.end() - 1, options.stages.end());
   const BodyPose* previous = nullptr;
-  for (int i : usable)
+  for (size_t k = 0; k < usable.size(); ++k)
   {
+    const int i = usable[k];
     BodyFrameFit& fit = fits[i];
     const BodyPose init = fit.pose;
     fitter.fitFrame(surfaces.get(i), init, fit.continuesPrevious ? previous : nullptr, finalStages,
@@ -390,7 +391,11 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
       fitter.refitFromNeighbour(surfaces.get(i), *previous, finalStages, fit,
                                 /*coverAsMuch=*/false);
     tryRaisedLegs(fitter, surfaces.get(i), finalStages, options.legRaiseStart, fit);
-    if (!fit.continuesPrevious && options.limbRestarts) fitter.refitLimbs(surfaces.get(i), fit);
+    // The first frame has no predecessor; when its successor does not continue it either, it is
+    // as unrelated as the frames of a collection.
+    const bool unrelated = !fit.continuesPrevious || (k == 0 && k + 1 < usable.size() &&
+                                                      !fits[usable[k + 1]].continuesPrevious);
+    if (unrelated && options.limbRestarts) fitter.refitLimbs(surfaces.get(i), fit);
     if (fit.status == BodyFitStatus::Poor && fit.message.empty()) fit.message = "poor fit";
     previous = &fit.pose;
     surfaces.release(i);

@@ -148,7 +148,8 @@ struct BodyFitOptions
   /// knee. 0: off.
   double legRaiseStart = 0.6;
   /// A frame that does not continue its predecessor (neighbourGap) is also started again, in the
-  /// first and the final pass, with each limb back in the rest pose and with each limb aimed at
+  /// first and the final pass (the first frame in the final pass, when its successor does not
+  /// continue it), with each limb back in the rest pose and with each limb aimed at
   /// a detected extremity its fit leaves unpaired, and with both arms, then both legs, aimed at
   /// each other's extremity; a start is kept where it explains the frame better both ways and
   /// does not put more of the arms inside the torso. Extremities are paired by proximity, so
