@@ -497,6 +497,14 @@ Sequence twoUnrelatedPoses(bool raisedFirst)
   return collection;
 }
 
+/// The body fitted to every frame of `collection` as key frames.
+BodyFitResult fitUnrelatedPoses(const Sequence& collection)
+{
+  BodyFitOptions options;
+  options.shapeFrames = static_cast<int>(collection.captures.size());
+  return fitBodySequence(builtinBodyModel(), pointers(collection.captures), options);
+}
+
 /// Distances (m) of frame `frame`'s fitted ankles from the true ones.
 std::pair<double, double> ankleErrors(const BodyFitResult& fit, const Sequence& truth, int frame)
 {
@@ -514,10 +522,7 @@ TEST(BodyFit, UncrossesLegsInAnUnrelatedPose)
   // so no limb was free for the aimed restarts. Aiming both legs at each other's foot uncrosses
   // them.
   const Sequence collection = twoUnrelatedPoses(false);
-  BodyFitOptions options;
-  options.shapeFrames = 2;
-  const BodyFitResult fit =
-      fitBodySequence(builtinBodyModel(), pointers(collection.captures), options);
+  const BodyFitResult fit = fitUnrelatedPoses(collection);
   ASSERT_FALSE(fit.frames[1].continuesPrevious);
   double joints, surface, worst;
   fitErrors(fit, collection, Eigen::Matrix3d::Identity(), joints, surface, &worst, 1);
@@ -535,10 +540,7 @@ TEST(BodyFit, StartsTheLimbsOfACollectionsFirstFrameAgain)
   // The same two poses, the raised leg first. The first frame has no predecessor; its successor
   // does not continue it, so its limbs are started again like any unrelated frame's.
   const Sequence collection = twoUnrelatedPoses(true);
-  BodyFitOptions options;
-  options.shapeFrames = 2;
-  const BodyFitResult fit =
-      fitBodySequence(builtinBodyModel(), pointers(collection.captures), options);
+  const BodyFitResult fit = fitUnrelatedPoses(collection);
   ASSERT_FALSE(fit.frames[1].continuesPrevious);
   const auto [leftAnkle, rightAnkle] = ankleErrors(fit, collection, 0);
   std::printf("[ measured ] legs of a collection's first frame: ankles %.2f and %.2f cm\n",
