@@ -367,36 +367,44 @@ TEST(BodyFit, FitsACollectionOfUnrelatedPoses)
   EXPECT_LT(joints, 0.7 * trackedJoints);
 }
 
+/// A pose turned by `heading` (radians) about the up axis, shifted by `translation`, with the
+/// given joints' rotations (axis-angle) and the others at rest.
+BodyPose unrelatedPose(double heading, const Vec3& translation,
+                       std::initializer_list<std::pair<Joint, Vec3>> rotations)
+{
+  BodyPose p;
+  p.rotations(Pelvis, 1) = heading;
+  p.translation = translation;
+  for (const auto& [joint, r] : rotations) p.rotations.row(joint) = r.transpose();
+  return p;
+}
+
 TEST(BodyFit, ReachesLegsKickedOutInACollectionOfUnclothedPoses)
 {
   // Three unrelated poses of an unclothed man, one standing and two kicking a leg out forward,
   // each turned another way. Fitted from the standing pose, the kicked leg hangs down: its
   // foot's tip lies beyond the pairing gate of the hanging foot. The limb aimed at the unpaired
   // extremity reaches it.
-  auto pose = [](double heading, std::initializer_list<std::pair<Joint, Vec3>> rotations)
-  {
-    BodyPose p;
-    p.rotations(Pelvis, 1) = heading;
-    for (const auto& [joint, r] : rotations) p.rotations.row(joint) = r.transpose();
-    return p;
-  };
-  const std::vector<BodyPose> poses = {pose(1.74, {{LeftShoulder, {-0.83, -0.63, -0.78}},
-                                                   {RightShoulder, {-0.05, -0.58, 0.16}},
-                                                   {LeftHip, {-0.24, 0.21, -0.05}},
-                                                   {LeftKnee, {0.28, 0, 0}},
-                                                   {RightHip, {-0.37, -0.20, 0.15}},
-                                                   {RightKnee, {0.59, 0, 0}}}),
-                                       pose(-0.09, {{LeftShoulder, {-0.54, 0.66, 1.20}},
-                                                    {LeftElbow, {-2.07, 0, 0}},
-                                                    {RightShoulder, {-0.27, -0.27, -1.05}},
-                                                    {LeftHip, {-1.18, 0.04, 0.04}},
-                                                    {LeftKnee, {0.12, 0, 0}}}),
-                                       pose(-1.62, {{LeftShoulder, {0.27, -0.15, 1.23}},
-                                                    {LeftElbow, {-0.87, 0, 0}},
-                                                    {RightShoulder, {-0.69, -0.08, 0.55}},
-                                                    {RightElbow, {-1.97, 0, 0}},
-                                                    {RightHip, {-1.59, -0.24, 0.03}},
-                                                    {RightKnee, {0.41, 0, 0}}})};
+  const std::vector<BodyPose> poses = {unrelatedPose(1.74, Vec3::Zero(),
+                                                     {{LeftShoulder, {-0.83, -0.63, -0.78}},
+                                                      {RightShoulder, {-0.05, -0.58, 0.16}},
+                                                      {LeftHip, {-0.24, 0.21, -0.05}},
+                                                      {LeftKnee, {0.28, 0, 0}},
+                                                      {RightHip, {-0.37, -0.20, 0.15}},
+                                                      {RightKnee, {0.59, 0, 0}}}),
+                                       unrelatedPose(-0.09, Vec3::Zero(),
+                                                     {{LeftShoulder, {-0.54, 0.66, 1.20}},
+                                                      {LeftElbow, {-2.07, 0, 0}},
+                                                      {RightShoulder, {-0.27, -0.27, -1.05}},
+                                                      {LeftHip, {-1.18, 0.04, 0.04}},
+                                                      {LeftKnee, {0.12, 0, 0}}}),
+                                       unrelatedPose(-1.62, Vec3::Zero(),
+                                                     {{LeftShoulder, {0.27, -0.15, 1.23}},
+                                                      {LeftElbow, {-0.87, 0, 0}},
+                                                      {RightShoulder, {-0.69, -0.08, 0.55}},
+                                                      {RightElbow, {-1.97, 0, 0}},
+                                                      {RightHip, {-1.59, -0.24, 0.03}},
+                                                      {RightKnee, {0.41, 0, 0}}})};
   Sequence collection;
   collection.beta = Eigen::VectorXd::Zero(builtinBodyModel().numShapeComponents());
   collection.beta[0] = 0.8;
@@ -448,43 +456,34 @@ TEST(BodyFit, CountsArmsThatCrossThroughTheTorso)
 /// round with the left leg raised forward and out; in the order given by `raisedFirst`.
 Sequence twoUnrelatedPoses(bool raisedFirst)
 {
-  auto pose =
-      [](double heading, Vec3 translation, std::initializer_list<std::pair<Joint, Vec3>> rotations)
-  {
-    BodyPose p;
-    p.rotations(Pelvis, 1) = heading;
-    p.translation = translation;
-    for (const auto& [joint, r] : rotations) p.rotations.row(joint) = r.transpose();
-    return p;
-  };
-  std::vector<BodyPose> poses = {pose(0.11, {0.43, 0.0, 0.40},
-                                      {{Spine1, {-0.11, -0.02, 0.01}},
-                                       {Spine2, {0.21, -0.06, 0.0}},
-                                       {Neck, {-0.29, 0.03, 0.0}},
-                                       {LeftShoulder, {-0.53, -0.01, 0.91}},
-                                       {LeftElbow, {-0.08, 0, 0}},
-                                       {RightShoulder, {0.09, 0.21, -0.23}},
-                                       {RightElbow, {-0.73, 0, 0}},
-                                       {LeftHip, {-0.18, -0.17, -0.12}},
-                                       {LeftKnee, {0.44, 0, 0}},
-                                       {LeftAnkle, {-0.36, 0, 0}},
-                                       {RightHip, {-0.26, -0.01, 0.11}},
-                                       {RightKnee, {0.14, 0, 0}},
-                                       {RightAnkle, {-0.05, 0, 0}}}),
-                                 pose(-2.73, {-0.49, 0.0, 0.34},
-                                      {{Spine1, {-0.04, 0.03, 0.17}},
-                                       {Spine2, {-0.05, -0.05, 0.0}},
-                                       {Neck, {0.17, 0.38, 0.0}},
-                                       {LeftShoulder, {-0.01, 0.13, -1.03}},
-                                       {LeftElbow, {-1.23, 0, 0}},
-                                       {RightShoulder, {-0.35, -0.26, 0.43}},
-                                       {RightElbow, {-1.77, 0, 0}},
-                                       {LeftHip, {-0.82, 0.12, -0.44}},
-                                       {LeftKnee, {0.23, 0, 0}},
-                                       {LeftAnkle, {-0.04, 0, 0}},
-                                       {RightHip, {0.26, 0.15, 0.40}},
-                                       {RightKnee, {0.08, 0, 0}},
-                                       {RightAnkle, {-0.16, 0, 0}}})};
+  std::vector<BodyPose> poses = {unrelatedPose(0.11, {0.43, 0.0, 0.40},
+                                               {{Spine1, {-0.11, -0.02, 0.01}},
+                                                {Spine2, {0.21, -0.06, 0.0}},
+                                                {Neck, {-0.29, 0.03, 0.0}},
+                                                {LeftShoulder, {-0.53, -0.01, 0.91}},
+                                                {LeftElbow, {-0.08, 0, 0}},
+                                                {RightShoulder, {0.09, 0.21, -0.23}},
+                                                {RightElbow, {-0.73, 0, 0}},
+                                                {LeftHip, {-0.18, -0.17, -0.12}},
+                                                {LeftKnee, {0.44, 0, 0}},
+                                                {LeftAnkle, {-0.36, 0, 0}},
+                                                {RightHip, {-0.26, -0.01, 0.11}},
+                                                {RightKnee, {0.14, 0, 0}},
+                                                {RightAnkle, {-0.05, 0, 0}}}),
+                                 unrelatedPose(-2.73, {-0.49, 0.0, 0.34},
+                                               {{Spine1, {-0.04, 0.03, 0.17}},
+                                                {Spine2, {-0.05, -0.05, 0.0}},
+                                                {Neck, {0.17, 0.38, 0.0}},
+                                                {LeftShoulder, {-0.01, 0.13, -1.03}},
+                                                {LeftElbow, {-1.23, 0, 0}},
+                                                {RightShoulder, {-0.35, -0.26, 0.43}},
+                                                {RightElbow, {-1.77, 0, 0}},
+                                                {LeftHip, {-0.82, 0.12, -0.44}},
+                                                {LeftKnee, {0.23, 0, 0}},
+                                                {LeftAnkle, {-0.04, 0, 0}},
+                                                {RightHip, {0.26, 0.15, 0.40}},
+                                                {RightKnee, {0.08, 0, 0}},
+                                                {RightAnkle, {-0.16, 0, 0}}})};
   if (raisedFirst) std::swap(poses[0], poses[1]);
   Sequence collection;
   collection.beta = Eigen::VectorXd::Zero(builtinBodyModel().numShapeComponents());

@@ -733,10 +733,7 @@ private:
 
   void refitWithLimbsAimed(const FrameSurface& frame, BodyFrameFit& fit)
   {
-    std::array<int, kNumExtremities> match;
-    matchExtremities(samples_.pose(fit.pose), samples_, samples_.extremityRoots(fit.pose),
-                     frame.extremities, options_.extremityGate, options_.handGate, reachTolerance_,
-                     match);
+    const std::array<int, kNumExtremities> match = pairedExtremities(frame, fit.pose);
     for (size_t d = 0; d < frame.extremities.size(); ++d)
     {
       if (std::find(match.begin(), match.end(), static_cast<int>(d)) != match.end()) continue;
@@ -755,10 +752,7 @@ private:
   {
     for (int first : {0, 2})
     {
-      std::array<int, kNumExtremities> match;
-      matchExtremities(samples_.pose(fit.pose), samples_, samples_.extremityRoots(fit.pose),
-                       frame.extremities, options_.extremityGate, options_.handGate,
-                       reachTolerance_, match);
+      const std::array<int, kNumExtremities> match = pairedExtremities(frame, fit.pose);
       const Limb& a = kLimbs[first];
       const Limb& b = kLimbs[first + 1];
       if (match[a.extremity] < 0 || match[b.extremity] < 0) continue;
@@ -767,6 +761,18 @@ private:
           aimLimb(b, frame.extremities[match[a.extremity]], start))
         refitFrom(frame, start, fit);
     }
+  }
+
+  /// The frame's detected extremity paired with each of the body's in `pose` (-1: none), as
+  /// the fit pairs them (BodyFitOptions::extremityGate).
+  std::array<int, kNumExtremities> pairedExtremities(const FrameSurface& frame,
+                                                     const BodyPose& pose) const
+  {
+    std::array<int, kNumExtremities> match;
+    matchExtremities(samples_.pose(pose), samples_, samples_.extremityRoots(pose),
+                     frame.extremities, options_.extremityGate, options_.handGate, reachTolerance_,
+                     match);
+    return match;
   }
 
   /// Straightens `limb` below its root and turns the root so that the limb points at
