@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 namespace clothtrack::app
@@ -152,7 +153,10 @@ void addRunOptions(po::options_description& options, AlignSettings& s)
       "ground-truth sequence (one connectivity, same frames as INPUT): adds the errors")(
       "frames", po::value(&s.frameSpec),
       "frames A:B of the input (A included, B not; either may be left out)")(
-      "model", po::value(&s.modelPath), "body model file (default: the built-in model)")(
+      "model", po::value(&s.modelPaths)->composing(),
+      "body model file (default: the built-in model, also named 'builtin'); given more than once, "
+      "the sequence is aligned under each model into OUT/models/, and the first model's alignment "
+      "is kept unless another's is both less stretched and closer to the frames")(
       "threads", po::value(&s.threads)->default_value(0),
       "threads (0: all cores)")("skip-bad-frames", po::bool_switch(&s.skipBadFrames),
                                 "leave out unreadable frames with a warning instead of stopping")(
@@ -177,6 +181,11 @@ void check(const AlignSettings& s)
   const TemplateFitOptions& fit = s.fit;
   const PatchCorrespondenceOptions& patches = s.patches;
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
+  if (s.modelPaths.size() > 1 && s.mode != AlignMode::Full)
+    throw UsageError{"several --model values need the whole 'clothtrack align'"};
+  for (const std::string& path : s.modelPaths)
+    if (!path.empty() && !std::filesystem::is_regular_file(path))
+      throw UsageError{path + ": no such body model file (--model; 'builtin' is the built-in one)"};
   if (s.bodyFitOverlap < 1) throw UsageError{"--body-fit-overlap must be 1 or more"};
   if (!(s.sameShapeTolerance >= 0)) throw UsageError{"--same-shape-tolerance must be 0 or more"};
   if (s.chains < 0 || s.chains == 1) throw UsageError{"--chains must be 2 or more"};
@@ -281,6 +290,9 @@ std::optional<AlignSettings> parseAlignSettings(const Args& args, AlignMode mode
   s.limbRestarts = !values["no-limb-restarts"].as<bool>();
   s.twoShapes = !values["no-two-shapes"].as<bool>();
   s.selection.templateCriterion = parseTemplateCriterion(criterion);
+  for (std::string& path : s.modelPaths)
+    if (path == kBuiltinModelName) path.clear();
+  if (s.modelPaths.size() == 1) s.modelPath = s.modelPaths.front();
   check(s);
   resolveAutomatic(s.sequence, s.input);
   return s;

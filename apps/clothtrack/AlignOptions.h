@@ -16,6 +16,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace clothtrack::app
 {
@@ -28,10 +29,17 @@ enum class AlignMode
   FitOnly
 };
 
+/// The --model value that names the built-in body model.
+inline constexpr const char* kBuiltinModelName = "builtin";
+
 struct AlignSettings
 {
   AlignMode mode = AlignMode::Full;
   std::string input, output, truthInput, frameSpec, modelPath, markersPath, workDir;
+  /// Several --model values: the sequence is aligned under each, and one alignment is kept by its
+  /// ground-truth-free figures (AlignModels.h). "builtin" names the built-in model. One value is
+  /// modelPath.
+  std::vector<std::string> modelPaths;
   std::string solver = "exact";
   std::string factorBackend = factorBackendName(FactorBackend::Block);
   SequenceOptions sequence;

@@ -2,8 +2,10 @@
 //   OUT/aligned.pvd + aligned/   the template deformed through the sequence (one connectivity)
 //   OUT/metrics.json             timings, memory and, with --ground-truth, the errors
 //   OUT/work/                    intermediate results: a run that was stopped resumes from them
+//   OUT/models/                  with several --model values, each model's run (AlignModels.h)
 #include "AlignCache.h"
 #include "AlignInput.h"
+#include "AlignModels.h"
 #include "AlignOptions.h"
 #include "AlignedOutput.h"
 #include "BackgroundWriter.h"
@@ -853,12 +855,10 @@ void addRankTimings(nlohmann::json& metrics, const Run& run)
   metrics["rank_stage_seconds"] = perRank;
 }
 
-int alignCommand(const Args& args, AlignMode mode)
+int alignOnce(const AlignSettings& settings, AlignMode mode)
 {
-  std::optional<AlignSettings> settings = parseAlignSettings(args, mode);
-  if (!settings) return 0;
   Run run;
-  run.settings = std::move(*settings);
+  run.settings = settings;
   const AlignSettings& s = run.settings;
   // Processes on one machine share its cores.
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -908,6 +908,16 @@ int alignCommand(const Args& args, AlignMode mode)
     std::printf("report: %s\n", (run.out / "report.html").c_str());
   }
   return 0;
+}
+
+int alignCommand(const Args& args, AlignMode mode)
+{
+  std::optional<AlignSettings> settings = parseAlignSettings(args, mode);
+  if (!settings) return 0;
+  if (settings->modelPaths.size() > 1)
+    return alignUnderEachModel(*settings,
+                               [mode](const AlignSettings& one) { return alignOnce(one, mode); });
+  return alignOnce(*settings, mode);
 }
 } // namespace
 

@@ -3,6 +3,7 @@
 // to OUT/metrics.json and the Error array to every aligned frame.
 #include "Commands.h"
 #include "ErrorMetrics.h"
+#include "MetricsFile.h"
 #include "Options.h"
 #include "TextFile.h"
 
@@ -30,20 +31,6 @@ namespace clothtrack::app
 {
 namespace
 {
-nlohmann::json readMetrics(const fs::path& path)
-{
-  std::ifstream in(path);
-  if (!in) throw UsageError{path.string() + ": no metrics.json (run 'clothtrack align' first)"};
-  try
-  {
-    return nlohmann::json::parse(in);
-  }
-  catch (const nlohmann::json::exception& e)
-  {
-    throw UsageError{path.string() + ": not valid JSON (" + e.what() + ")"};
-  }
-}
-
 vtkSmartPointer<vtkPolyData> readAligned(const fs::path& path)
 {
   if (!fs::exists(path)) throw UsageError{path.string() + ": aligned frame missing"};
