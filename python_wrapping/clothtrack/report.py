@@ -293,6 +293,26 @@ def _confidence_section(metrics, image):
     return parts
 
 
+def _model_section(metrics):
+    """Which body model the alignment was kept under, and every model's figures
+    (`align --model A --model B`)."""
+    choice = metrics.get("model_choice")
+    if not choice:
+        return []
+    rows = []
+    for i, m in enumerate(choice["models"]):
+        figures = "mean stretch %.4f, surface distance %.2f mm" % (m["mean_stretch"],
+                                                                   1000 * m["mean_surface_distance_m"])
+        if "mean_vertex_error_m" in m:
+            figures += ", mean vertex error %.2f cm" % (100 * m["mean_vertex_error_m"])
+        rows.append(("%s%s" % (m["model"], " (kept)" if i == choice["kept"] else ""),
+                     "%s; %s" % (figures, m["folder"])))
+    return ["<h2>Body model</h2>",
+            "<p>Aligned under %d body models; kept: %s (%s).</p>"
+            % (len(choice["models"]), html.escape(metrics["model"]), html.escape(choice["criterion"])),
+            _table(rows)]
+
+
 def _table(rows):
     cells = "".join("<tr><th>%s</th><td>%s</td></tr>" % (html.escape(k), html.escape(v)) for k, v in rows)
     return "<table>%s</table>" % cells
@@ -349,6 +369,7 @@ def write_report(out):
              ("jitter", "%.2f mm (mean vertex acceleration per frame)" % (1000 * metrics["mean_jitter_m"]))]
     body = ["<h1>ClothTrack alignment report</h1>", _table(rows), "<h2>Per frame</h2>"]
     body += ['<img src="images/%s" alt="%s">' % (p, p) for p in plots]
+    body += _model_section(metrics)
     body += _confidence_section(metrics, _confidence_plot(metrics, images))
     body.append("<h2>Frames</h2>")
     shown = set()
