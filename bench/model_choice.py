@@ -26,7 +26,7 @@ FIGURES = [
 ]
 
 
-MARGIN = 0.02
+MARGIN = 0.02  # kModelChoiceMargin in core/clothtrack/eval/ModelChoice.h
 
 
 def mean(values):

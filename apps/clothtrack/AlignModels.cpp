@@ -12,8 +12,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <limits>
+#include <string>
 
 namespace fs = std::filesystem;
 
@@ -80,10 +80,11 @@ nlohmann::json choiceSummary(const AlignSettings& s, const std::vector<nlohmann:
       if (metrics[i].contains(key)) entry[key] = metrics[i][key];
     models.push_back(entry);
   }
-  return {{"criterion", "the first model, replaced by one whose alignment is less stretched and "
-                        "closer to the frames, each by more than 2 %"},
-          {"kept", kept},
-          {"models", models}};
+  const std::string criterion =
+      "the first model, replaced by one whose alignment is less stretched and closer to the "
+      "frames, each by more than " +
+      std::to_string(static_cast<int>(std::lround(100 * kModelChoiceMargin))) + " %";
+  return {{"criterion", criterion}, {"kept", kept}, {"models", models}};
 }
 
 void printChoice(const nlohmann::json& choice)

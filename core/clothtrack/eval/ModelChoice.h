@@ -11,6 +11,9 @@
 
 namespace clothtrack
 {
+/// Share by which another alignment's figures must both be lower to replace the kept one.
+inline constexpr double kModelChoiceMargin = 0.02;
+
 /// Ground-truth-free figures of one alignment, each a mean over its frames.
 struct AlignmentFigures
 {
@@ -27,5 +30,6 @@ double meanOverFrames(const std::vector<double>& perFrame);
 /// one's figure), so that the first named model stays when two are as good. On pjump, where the
 /// MakeHuman model is the better by 0.5 cm, its alignment is 7.8 % less stretched and 9.7 %
 /// closer. Throws Error when there is no alignment.
-int preferredAlignment(const std::vector<AlignmentFigures>& figures, double margin = 0.02);
+int preferredAlignment(const std::vector<AlignmentFigures>& figures,
+                       double margin = kModelChoiceMargin);
 } // namespace clothtrack
