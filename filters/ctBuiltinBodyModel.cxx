@@ -80,13 +80,17 @@ TriangleMesh proceduralBodyMesh(double stature, int targetVertices)
   return mesh;
 }
 
+BodyModel proceduralBodyModel(const BodySpread& spread)
+{
+  const double stature = 1.72;
+  BodyModelBuildOptions options;
+  options.spread = spread;
+  return buildBodyModel(proceduralBodyMesh(stature), proceduralSkeleton(stature), stature, options);
+}
+
 const BodyModel& builtinBodyModel()
 {
-  static const BodyModel model = []
-  {
-    const double stature = 1.72;
-    return buildBodyModel(proceduralBodyMesh(stature), proceduralSkeleton(stature), stature);
-  }();
+  static const BodyModel model = proceduralBodyModel(BodySpread{});
   return model;
 }
 } // namespace clothtrack

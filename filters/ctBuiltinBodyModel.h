@@ -7,6 +7,7 @@
 #include "ctFiltersModule.h"
 
 #include <clothtrack/body/BodyModel.h>
+#include <clothtrack/body/ProceduralBody.h>
 
 namespace clothtrack
 {
@@ -15,6 +16,10 @@ CTFILTERS_EXPORT TriangleMesh proceduralBodyMesh(double stature = 1.72, int targ
 
 /// The built-in model, built on first use (a few seconds) and shared afterwards; thread-safe.
 CTFILTERS_EXPORT const BodyModel& builtinBodyModel();
+
+/// A model built as the built-in one, from a population of the given spread (a few seconds each
+/// call): `clothtrack body-model --spread` writes it as a model file for `--model`.
+CTFILTERS_EXPORT BodyModel proceduralBodyModel(const BodySpread& spread);
 } // namespace clothtrack
 
 #endif

@@ -68,6 +68,15 @@ if (NOT EXISTS ${WORK}/model.vtp OR NOT EXISTS ${WORK}/body.obj)
 endif ()
 expect_run(1 "--beta takes comma-separated numbers" body-model --mesh ${WORK}/b.obj --beta 1,x)
 expect_run(1 "nothing to do" body-model)
+# A model from a wider population: the proportions named, each its factor.
+expect_run(0 "40 landmarks" body-model -o ${WORK}/wide.vtp --spread neckLength=2.5 --spread headSize=2)
+file(SHA256 ${WORK}/model.vtp builtin_hash)
+file(SHA256 ${WORK}/wide.vtp wide_hash)
+if (builtin_hash STREQUAL wide_hash)
+  message(FATAL_ERROR "body-model --spread wrote the built-in model")
+endif ()
+expect_run(1 "no body proportion named 'neck'" body-model -o ${WORK}/bad.vtp --spread neck=2)
+expect_run(1 "--spread takes NAME=FACTOR" body-model -o ${WORK}/bad.vtp --spread neckLength)
 
 # simulate-capture: the shaped body becomes an independently re-meshed capture with a source map.
 expect_run(0 "wrote 1 captured frames" simulate-capture ${WORK}/body.obj -o ${WORK}/capture --voxel 0.02 --holes 2)

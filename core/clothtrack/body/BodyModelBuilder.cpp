@@ -373,7 +373,8 @@ BodyModel buildBodyModel(const TriangleMesh& templateMesh, const SkeletonGeometr
   Points v, j;
   for (int k = 0; k < N; ++k)
   {
-    deformTemplate(templateMesh, skeleton, model.weights, sampleBodyParameters(rng), v, j);
+    deformTemplate(templateMesh, skeleton, model.weights, sampleBodyParameters(rng, options.spread),
+                   v, j);
     X.row(k).head(3 * n) = Eigen::Map<const Eigen::RowVectorXd>(v.data(), 3 * n);
     X.row(k).tail(3 * NumJoints) = Eigen::Map<const Eigen::RowVectorXd>(j.data(), 3 * NumJoints);
   }

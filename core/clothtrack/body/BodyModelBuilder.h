@@ -20,6 +20,7 @@ struct BodyModelBuildOptions
   unsigned seed = 20160925;
   /// Surface diffusion steps for the skinning weights (blend width ~ sqrt(steps) edge lengths).
   int weightSmoothingSteps = 40;
+  BodySpread spread; ///< of the population's proportions
 };
 
 /// Skinning weights (n x NumJoints, at most 4 non-zero per row, rows summing to 1).

@@ -1,5 +1,7 @@
 #include "ProceduralBody.h"
 
+#include <clothtrack/base/Error.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -172,7 +174,26 @@ double proceduralBodyDistance(const SkeletonGeometry& s, double H, const Vec3& p
   return body;
 }
 
-BodyParameters sampleBodyParameters(std::mt19937& rng)
+void setBodySpread(BodySpread& spread, const std::string& name, double factor)
+{
+  const std::pair<const char*, double*> fields[] = {
+      {"legLength", &spread.legLength},         {"armLength", &spread.armLength},
+      {"torsoLength", &spread.torsoLength},     {"neckLength", &spread.neckLength},
+      {"shoulderWidth", &spread.shoulderWidth}, {"headSize", &spread.headSize}};
+  if (!(factor >= 0.0 && factor <= 10.0))
+    throw Error("the spread factor of " + name + " must lie in [0, 10] (got " +
+                std::to_string(factor) + ")");
+  for (const auto& [fieldName, value] : fields)
+    if (name == fieldName)
+    {
+      *value = factor;
+      return;
+    }
+  throw Error("no body proportion named '" + name +
+              "' (legLength, armLength, torsoLength, neckLength, shoulderWidth, headSize)");
+}
+
+BodyParameters sampleBodyParameters(std::mt19937& rng, const BodySpread& spread)
 {
   std::normal_distribution<double> n(0.0, 1.0);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -183,11 +204,11 @@ BodyParameters sampleBodyParameters(std::mt19937& rng)
   b.stature = (female ? 1.63 : 1.76) + 0.07 * n(rng);
   const double weight = 0.10 * n(rng); // relative: girths grow together
   const double f = b.femininity - 0.5;
-  b.legLength = 1.0 + 0.03 * n(rng);
-  b.armLength = 1.0 + 0.03 * n(rng);
-  b.torsoLength = 1.0 + 0.025 * n(rng);
-  b.neckLength = 1.0 + 0.06 * n(rng);
-  b.shoulderWidth = 1.0 - 0.10 * f + 0.035 * n(rng);
+  b.legLength = 1.0 + 0.03 * spread.legLength * n(rng);
+  b.armLength = 1.0 + 0.03 * spread.armLength * n(rng);
+  b.torsoLength = 1.0 + 0.025 * spread.torsoLength * n(rng);
+  b.neckLength = 1.0 + 0.06 * spread.neckLength * n(rng);
+  b.shoulderWidth = 1.0 - 0.10 * f + 0.035 * spread.shoulderWidth * n(rng);
   b.hipWidth = 1.0 + 0.08 * f + 0.035 * n(rng);
   b.chestGirth = 1.0 - 0.05 * f + 0.8 * weight + 0.03 * n(rng);
   b.waistGirth = 1.0 - 0.10 * f + 1.3 * weight + 0.04 * n(rng);
@@ -197,7 +218,7 @@ BodyParameters sampleBodyParameters(std::mt19937& rng)
   b.thighGirth = 1.0 + 0.04 * f + 0.9 * weight + 0.04 * n(rng);
   b.calfGirth = 1.0 + 0.6 * weight + 0.04 * n(rng);
   b.neckGirth = 1.0 - 0.10 * f + 0.5 * weight + 0.03 * n(rng);
-  b.headSize = 1.0 - 0.03 * f + 0.025 * n(rng);
+  b.headSize = 1.0 - 0.03 * f + 0.025 * spread.headSize * n(rng);
   b.belly = 1.0 + 2.0 * std::max(weight, -0.05) + 0.05 * n(rng);
   b.bust = 1.0 + 0.5 * f + 0.6 * weight + 0.06 * n(rng);
   return b;

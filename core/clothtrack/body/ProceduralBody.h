@@ -6,6 +6,7 @@
 #include "Skeleton.h"
 
 #include <random>
+#include <string>
 
 namespace clothtrack
 {
@@ -25,9 +26,23 @@ struct BodyParameters
   double belly = 1.0, bust = 1.0;
 };
 
+/// Factors on the population's spread of each proportion (1: the built-in model's). A wider
+/// spread reaches proportions the built-in shape space lacks (pjump's shoulders and head), at a
+/// price: under the one measured a 1.95 m person is fitted 8 cm shorter (BENCHMARKS.md, "A wider
+/// shape space").
+struct BodySpread
+{
+  double legLength = 1.0, armLength = 1.0, torsoLength = 1.0, neckLength = 1.0, shoulderWidth = 1.0,
+         headSize = 1.0;
+};
+
+/// Sets the factor of the proportion `name` (a BodySpread field, e.g. "neckLength"). Throws Error
+/// for an unknown name or a factor outside [0, 10].
+void setBodySpread(BodySpread& spread, const std::string& name, double factor);
+
 /// A random plausible body: stature and proportions drawn around sex-typical means, with
 /// weight acting jointly on the girths.
-BodyParameters sampleBodyParameters(std::mt19937& rng);
+BodyParameters sampleBodyParameters(std::mt19937& rng, const BodySpread& spread = {});
 
 /// Rest-pose skeleton of the mean body (only stature is used: proportions come from the surface
 /// deformation of the body model).
