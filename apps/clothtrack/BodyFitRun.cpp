@@ -5,8 +5,12 @@
 #include "ctBodyModelIO.h"
 #include "ctBuiltinBodyModel.h"
 
+#include <clothtrack/base/Error.h>
+
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -17,6 +21,24 @@ const BodyModel& bodyModel(const std::string& path, BodyModel& storage)
   if (path.empty()) return builtinBodyModel();
   storage = readBodyModel(path);
   return storage;
+}
+
+std::string bodyModelFingerprint(const std::string& path)
+{
+  if (path.empty()) return "builtin";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot read the body model file");
+  std::uint64_t hash = 14695981039346656037ull; // FNV-1a, 64 bits
+  std::vector<char> buffer(1 << 16);
+  while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0)
+    for (std::streamsize i = 0; i < in.gcount(); ++i)
+    {
+      hash ^= static_cast<unsigned char>(buffer[static_cast<size_t>(i)]);
+      hash *= 1099511628211ull;
+    }
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
 }
 
 BodyFitResult fitBodiesWithProgress(const BodyModel& model,

@@ -13,6 +13,11 @@ namespace clothtrack::app
 /// The model read from `path` into `storage`, or the built-in model when `path` is empty.
 const BodyModel& bodyModel(const std::string& path, BodyModel& storage);
 
+/// What the work folder's results are keyed on for the model at `path`: "builtin" when empty,
+/// else a hash of the file's bytes, so that a model file rewritten in place is not taken for the
+/// one the stored body fits were made with. Throws Error when the file cannot be read.
+std::string bodyModelFingerprint(const std::string& path);
+
 /// fitBodySequence with a "body-fit" progress line counted in frames.
 BodyFitResult fitBodiesWithProgress(const BodyModel& model,
                                     const std::vector<const TriangleMesh*>& frames,

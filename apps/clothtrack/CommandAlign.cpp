@@ -190,9 +190,13 @@ void runBodyStage(Run& run, bool together)
   options.fit.twoShapes = s.twoShapes;
   options.fit.sameShapeTolerance = s.sameShapeTolerance;
   options.keepBodyLandmarks = false; // only the seeds are used: a long sequence stays small
-  run.landmarkKey = {{"files", run.input.files},  {"model", s.modelPath},
-                     {"up", s.sequence.up},       {"unit", s.sequence.unit},
-                     {"scale", s.sequence.scale}, {"body_fit", bodyStageKey(options)}};
+  run.landmarkKey = {{"files", run.input.files},
+                     {"model", s.modelPath},
+                     {"model_content", bodyModelFingerprint(s.modelPath)},
+                     {"up", s.sequence.up},
+                     {"unit", s.sequence.unit},
+                     {"scale", s.sequence.scale},
+                     {"body_fit", bodyStageKey(options)}};
   if (together)
   {
     // Segments tracked apart are fitted a little differently from one whole track.

@@ -139,6 +139,15 @@ if (staged_mean GREATER 0.04 OR staged_correspond GREATER 0.5)
   message(FATAL_ERROR "fit after correspond: error ${staged_mean}, correspondence ${staged_correspond} s")
 endif ()
 expect_early_error("run 'clothtrack correspond'" fit ${WORK}/synth/frames --frames 2:5 -o ${WORK}/unstaged)
+# A model file rewritten in place is another model: the stored body fits are not reused.
+expect_run(0 "40 landmarks" body-model -o ${WORK}/model.vtp)
+expect_run(0 "landmarks and correspondences of 2 frames" correspond ${WORK}/synth/frames --frames 0:2
+  -o ${WORK}/staged_model --model ${WORK}/model.vtp)
+expect_run(0 "body fit: landmarks of 2 frames reused" fit ${WORK}/synth/frames --frames 0:2
+  -o ${WORK}/staged_model --model ${WORK}/model.vtp --no-report)
+expect_run(0 "40 landmarks" body-model -o ${WORK}/model.vtp --spread headSize=2)
+expect_early_error("run 'clothtrack correspond'" fit ${WORK}/synth/frames --frames 0:2
+  -o ${WORK}/staged_model --model ${WORK}/model.vtp)
 expect_run(0 "wrote 3 frames" render ${WORK}/staged --movie-only --size 320x320)
 if (NOT EXISTS ${WORK}/staged/movie/movie_0002.png)
   message(FATAL_ERROR "render wrote no movie frames")
