@@ -183,14 +183,17 @@ void setBodySpread(BodySpread& spread, const std::string& name, double factor)
   if (!(factor >= 0.0 && factor <= 10.0))
     throw Error("the spread factor of " + name + " must lie in [0, 10] (got " +
                 std::to_string(factor) + ")");
+  std::string known;
   for (const auto& [fieldName, value] : fields)
+  {
     if (name == fieldName)
     {
       *value = factor;
       return;
     }
-  throw Error("no body proportion named '" + name +
-              "' (legLength, armLength, torsoLength, neckLength, shoulderWidth, headSize)");
+    known += (known.empty() ? "" : ", ") + std::string(fieldName);
+  }
+  throw Error("no body proportion named '" + name + "' (" + known + ")");
 }
 
 BodyParameters sampleBodyParameters(std::mt19937& rng, const BodySpread& spread)
