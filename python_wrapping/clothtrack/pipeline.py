@@ -1,9 +1,13 @@
 """The whole pipeline in one call: clothtrack.align(frames, ...)."""
 
+import os
+
 import numpy as np
 from vtkmodules.util import numpy_support
 
 from .sequence import _ErrorCatcher, read_sequence
+
+_BUILTIN_MODEL = "builtin"  # the model named as on the command line (--model builtin)
 
 
 class Alignment:
@@ -25,7 +29,12 @@ class Alignment:
                     the app); always per_frame_confidence, per_frame_coverage_distance_m,
                     per_frame_fit_attempts, per_frame_body_distance_m and per_frame_extent_gap_m
                     (None where the frame's body is not trusted) and doubtful_frames (frames with
-                    a confidence below 1; the fit stage warns about each)
+                    a confidence below 1; the fit stage warns about each); with several body
+                    models also model and model_choice, as in metrics.json
+    model           the body model it was made under: "builtin" or the model file as named
+    model_alignments  every model's Alignment, in the order the models were named (this one among
+                    them); [self] under one model
+    summary         the template fit's per-frame vtkTable (ctTemplateFit output port 1)
     """
 
     def __init__(self, aligned, template_frame, errors=None, frame_errors=None, fit_summary=None):
@@ -34,6 +43,9 @@ class Alignment:
         self.positions = np.stack([numpy_support.vtk_to_numpy(a.GetPoints().GetData()) for a in aligned])
         self.faces = numpy_support.vtk_to_numpy(aligned[0].GetPolys().GetConnectivityArray()).reshape(-1, 3)
         self.errors = errors
+        self.model = _BUILTIN_MODEL
+        self.model_alignments = [self]
+        self.summary = fit_summary
         distances = [numpy_support.vtk_to_numpy(a.GetPointData().GetArray("SurfaceDistance")) for a in aligned]
         self.metrics = {
             "frames": len(aligned),
@@ -112,9 +124,25 @@ def _set_stage_keywords(stage, algorithm, options):
             getattr(algorithm, "Set" + _property_name(keyword))(value)
 
 
+def _model_label(model):
+    return _BUILTIN_MODEL if model is None else str(model)
+
+
+def _models_of(model):
+    """The body models named by align()'s `model` keyword, as a list of labels."""
+    models = list(model) if isinstance(model, (list, tuple)) else [model]
+    if not models:
+        raise ValueError("model: an empty list names no body model")
+    labels = [_model_label(m) for m in models]
+    for label in labels:
+        if label != _BUILTIN_MODEL and not os.path.isfile(label):
+            raise FileNotFoundError("%s: no such body model file" % label)
+    return labels
+
+
 def align(frames, ground_truth=None, template_frame=None, solver="exact", predict_radius=0.3,
           shape_frames=8, frame_rate=25.0, progress=None, template_criterion="rest-pose",
-          threads=0, **options):
+          threads=0, model=None, **options):
     """Aligns a captured sequence: body fit and landmarks, template choice, geodesic-patch
     correspondences, template fit and, with a ground truth, the vertex errors.
 
@@ -130,6 +158,13 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
                     their neighbour's fit unchanged, as the paper does
     progress        optional callable(stage_name, fraction) called as the stages advance
     threads         threads of each stage (0: every core)
+    model           the body model: None or "builtin" (the built-in model), a model file (.vtp,
+                    `clothtrack body-model`, `clothtrack import-makehuman`), or a list of these.
+                    With a list the sequence is aligned under each, and the alignment kept as
+                    `clothtrack align --model A --model B` keeps it (ctModelChoice, no ground
+                    truth): the first, replaced by one both less stretched and closer to the
+                    frames. The result's metrics then hold "model" and "model_choice" as the
+                    app's metrics.json does, and model_alignments holds every model's Alignment.
     options         further parameters by their snake_case names (docs/parameters.md), e.g.
                     epsilon=0.2, minimum_radius=0.05, minimum_shell_area=0.05, persistence=2,
                     solver_tolerance=1e-5, maximum_truth_distance=0.05, start_from_body=False
@@ -138,8 +173,6 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
 
     Returns an Alignment. Raises RuntimeError with the stage's message when a stage fails.
     """
-    import clothtrack
-
     if solver not in ("exact", "lbfgs"):
         raise ValueError("solver must be 'exact' or 'lbfgs'")
     if template_criterion not in ("rest-pose", "area-ratio"):
@@ -151,46 +184,70 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
                                                                           ", ".join(sorted(known))))
     if threads < 0:
         raise ValueError("threads must be 0 (every core) or more")
+    models = _models_of(model)
     sequence = _as_sequence(frames, frame_rate)
-    body = clothtrack.ctBodyFit()
-    body.SetInputData(sequence)
-    body.SetShapeFrames(min(shape_frames, sequence.GetNumberOfBlocks()))
-    _set_stage_keywords("body", body, options)
-    correspondence = clothtrack.ctPatchCorrespondence()
-    correspondence.SetInputData(0, sequence)
-    correspondence.SetInputConnection(1, body.GetOutputPort(1))
-    correspondence.SetTemplateCriterion(1 if template_criterion == "rest-pose" else 0)
-    _set_stage_keywords("correspondence", correspondence, options)
-    if template_frame is not None:
-        if not 0 <= template_frame < sequence.GetNumberOfBlocks():
-            raise ValueError("template_frame %d is not a frame (0..%d)" % (template_frame,
-                                                                            sequence.GetNumberOfBlocks() - 1))
-        correspondence.SetTemplateFrame(template_frame)
-    fit = clothtrack.ctTemplateFit()
-    fit.SetInputData(0, sequence)
-    fit.SetInputConnection(1, correspondence.GetOutputPort(0))
-    fit.SetInputConnection(2, body.GetOutputPort(1))
-    fit.SetInputConnection(3, body.GetOutputPort(0))
-    fit.SetSolver(fit.LBFGS if solver == "lbfgs" else fit.EXACT)
-    fit.SetPredictRadius(predict_radius)
-    _set_stage_keywords("fit", fit, options)
-    for algorithm in (body, correspondence, fit):
-        algorithm.SetNumberOfThreads(threads)
-    last = fit
+    if template_frame is not None and not 0 <= template_frame < sequence.GetNumberOfBlocks():
+        raise ValueError("template_frame %d is not a frame (0..%d)" % (template_frame,
+                                                                        sequence.GetNumberOfBlocks() - 1))
+    truth = None
     if ground_truth is not None:
         truth = _as_sequence(ground_truth, frame_rate)
         if truth.GetNumberOfBlocks() != sequence.GetNumberOfBlocks():
             raise ValueError("the ground truth has %d frames, the sequence %d"
                              % (truth.GetNumberOfBlocks(), sequence.GetNumberOfBlocks()))
+    settings = dict(template_frame=template_frame, solver=solver, predict_radius=predict_radius,
+                    shape_frames=shape_frames, progress=progress,
+                    template_criterion=template_criterion, threads=threads, options=options)
+    alignments = [_align_under(sequence, truth, label, settings) for label in models]
+    if len(alignments) == 1:
+        return alignments[0]
+    return _choose(alignments)
+
+
+def _align_under(sequence, truth, model, settings):
+    """One alignment of `sequence` under body model `model` (a label of _models_of)."""
+    import clothtrack
+
+    options = settings["options"]
+    body = clothtrack.ctBodyFit()
+    body.SetInputData(sequence)
+    body.SetShapeFrames(min(settings["shape_frames"], sequence.GetNumberOfBlocks()))
+    stages = {}
+    if model != _BUILTIN_MODEL:
+        reader = clothtrack.ctBodyModelReader()
+        reader.SetFileName(model)
+        body.SetBodyModelConnection(reader.GetOutputPort())
+        stages["body model"] = reader
+    _set_stage_keywords("body", body, options)
+    correspondence = clothtrack.ctPatchCorrespondence()
+    correspondence.SetInputData(0, sequence)
+    correspondence.SetInputConnection(1, body.GetOutputPort(1))
+    correspondence.SetTemplateCriterion(1 if settings["template_criterion"] == "rest-pose" else 0)
+    _set_stage_keywords("correspondence", correspondence, options)
+    if settings["template_frame"] is not None:
+        correspondence.SetTemplateFrame(settings["template_frame"])
+    fit = clothtrack.ctTemplateFit()
+    fit.SetInputData(0, sequence)
+    fit.SetInputConnection(1, correspondence.GetOutputPort(0))
+    fit.SetInputConnection(2, body.GetOutputPort(1))
+    fit.SetInputConnection(3, body.GetOutputPort(0))
+    fit.SetSolver(fit.LBFGS if settings["solver"] == "lbfgs" else fit.EXACT)
+    fit.SetPredictRadius(settings["predict_radius"])
+    _set_stage_keywords("fit", fit, options)
+    for algorithm in (body, correspondence, fit):
+        algorithm.SetNumberOfThreads(settings["threads"])
+    last = fit
+    if truth is not None:
         last = clothtrack.ctAlignmentError()
         last.SetInputConnection(0, fit.GetOutputPort(0))
         last.SetInputData(1, truth)
         _set_stage_keywords("error", last, options)
 
-    stages = {"body fit": body, "correspondence": correspondence, "template fit": fit}
+    stages.update({"body fit": body, "correspondence": correspondence, "template fit": fit})
     if last is not fit:
         stages["alignment error"] = last
     catchers = {name: _ErrorCatcher(algorithm) for name, algorithm in stages.items()}
+    progress = settings["progress"]
     if progress is not None:
         for name, algorithm in stages.items():
             algorithm.AddObserver("ProgressEvent", lambda obj, _event, name=name: progress(name, obj.GetProgress()))
@@ -203,6 +260,42 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
     aligned = [output.GetBlock(k) for k in range(output.GetNumberOfBlocks())]
     summary = fit.GetSummaryOutput()
     if last is fit:
-        return Alignment(aligned, correspondence.GetChosenFrame(), fit_summary=summary)
-    errors = np.stack([numpy_support.vtk_to_numpy(a.GetPointData().GetArray("Error")) for a in aligned])
-    return Alignment(aligned, correspondence.GetChosenFrame(), errors, last.GetFrameErrorOutput(), summary)
+        result = Alignment(aligned, correspondence.GetChosenFrame(), fit_summary=summary)
+    else:
+        errors = np.stack([numpy_support.vtk_to_numpy(a.GetPointData().GetArray("Error")) for a in aligned])
+        result = Alignment(aligned, correspondence.GetChosenFrame(), errors, last.GetFrameErrorOutput(), summary)
+    result.model = model
+    return result
+
+
+def _choose(alignments):
+    """The alignment ctModelChoice keeps, with the choice in its metrics as in metrics.json."""
+    import clothtrack
+
+    choice = clothtrack.ctModelChoice()
+    for alignment in alignments:
+        choice.AddInputDataObject(0, alignment.summary)
+    catcher = _ErrorCatcher(choice)
+    choice.Update()
+    if catcher.message:
+        raise RuntimeError("model choice: %s" % catcher.message)
+    table = choice.GetOutput()
+    kept = choice.GetKeptAlignment()
+    models = []
+    for i, alignment in enumerate(alignments):
+        entry = {"model": alignment.model,
+                 "mean_stretch": table.GetValueByName(i, "MeanStretch").ToDouble(),
+                 "mean_surface_distance_m": table.GetValueByName(i, "MeanSurfaceDistance").ToDouble(),
+                 "doubtful_frames": len(alignment.metrics.get("doubtful_frames", []))}
+        for key in ("mean_vertex_error_m", "within_10cm"):
+            if key in alignment.metrics:
+                entry[key] = alignment.metrics[key]
+        models.append(entry)
+    result = alignments[kept]
+    result.metrics["model"] = result.model
+    result.metrics["model_choice"] = {
+        "criterion": "the first model, replaced by one whose alignment is less stretched and closer "
+                     "to the frames, each by more than %d %%" % round(100 * choice.GetMargin()),
+        "kept": kept, "models": models}
+    result.model_alignments = alignments
+    return result

@@ -1,5 +1,7 @@
 """Sequence helpers: read a whole captured sequence and view it as numpy arrays."""
 
+import re
+
 from vtkmodules.util import numpy_support
 
 
@@ -40,8 +42,17 @@ def frames_as_numpy(frames):
     return out
 
 
+def _readable(message):
+    """The filter's own words: VTK puts its source file, line and object address before them."""
+    text = str(message).strip()
+    if text.startswith("ERROR: In ") and "\n" in text:
+        text = text.split("\n", 1)[1]
+    return re.sub(r"^\w+ \(0x[0-9a-fA-F]+\): ", "", text)
+
+
 class _ErrorCatcher:
-    """Keeps the first error message an algorithm emits (instead of printing it)."""
+    """Keeps the first error message an algorithm emits (instead of printing it), without VTK's
+    source location."""
 
     def __init__(self, algorithm):
         from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
@@ -50,7 +61,7 @@ class _ErrorCatcher:
 
         def on_error(_obj, _event, message):
             if not self.message:
-                self.message = str(message)
+                self.message = _readable(message)
 
         on_error.CallDataType = VTK_STRING  # receive the message text, not a pointer
         algorithm.AddObserver(vtkCommand.ErrorEvent, on_error)

@@ -110,6 +110,19 @@ check(ratios[by_area] == min(r for k, r in enumerate(ratios) if table.GetValueBy
       "with the area ratio, frame %d is not the most uniform candidate" % by_area)
 simple.Delete(selection)
 
+# Model Choice takes several template fits' summaries (here one fit's twice): one row each, the
+# means of their Stretch and MeanSurfaceDistance columns, and the first kept when they tie.
+summary = pipeline["fit"].GetClientSideObject().GetOutputDataObject(1)
+choice = simple.ClothTrackModelChoice(Input=[simple.OutputPort(pipeline["fit"], 1)] * 2)
+choice.UpdatePipeline()
+rows = choice.GetClientSideObject().GetOutputDataObject(0)
+check(rows.GetNumberOfRows() == 2, "model choice rows %d" % rows.GetNumberOfRows())
+stretch = [summary.GetValueByName(k, "Stretch").ToDouble() for k in range(summary.GetNumberOfRows())]
+mean_stretch = rows.GetValueByName(1, "MeanStretch").ToDouble()
+check(abs(mean_stretch - sum(stretch) / len(stretch)) < 1e-12, "model choice mean stretch %g" % mean_stretch)
+check([rows.GetValueByName(k, "Kept").ToInt() for k in range(2)] == [1, 0], "model choice kept the second of two ties")
+simple.Delete(choice)
+
 shot = paths[-1]
 baseline = os.path.join(baselines, "plugin_pipeline_aligned.png")
 if os.environ.get("CLOTHTRACK_UPDATE_BASELINES") == "1":

@@ -114,6 +114,16 @@ class AlignTest(unittest.TestCase):
             clothtrack.align(frames, threads=-1)
         with self.assertRaisesRegex(ValueError, "ground truth has 3 frames"):
             clothtrack.align(frames, ground_truth=frames[:3])
+        missing = os.path.join(self.data, "missing.vtp")
+        with self.assertRaisesRegex(FileNotFoundError, "missing.vtp: no such body model file"):
+            clothtrack.align(frames, model=["builtin", missing])
+        with self.assertRaisesRegex(ValueError, "no body model"):
+            clothtrack.align(frames, model=[])
+        bogus = os.path.join(self.data, "bogus.vtp")
+        with open(bogus, "w") as f:
+            f.write("not a body model\n")
+        with self.assertRaisesRegex(RuntimeError, "^body model: .*bogus.vtp: .*a body model is a VTP file"):
+            clothtrack.align(frames, model=bogus)
 
 
 if __name__ == "__main__":

@@ -2,6 +2,8 @@
 (clothtrack align), a C++ filter chain (example_align_sequence), clothtrack.align in Python and the
 ParaView plugin's chain in pvpython must choose the same template frame and give the same aligned
 positions (to 1e-9 m; each path uses every core, and results do not depend on the thread count).
+Under two body models, the command line and clothtrack.align must also keep the same one, by the
+same figures.
 """
 import glob
 import os
@@ -46,13 +48,25 @@ class Equivalence(unittest.TestCase):
                        check=True, stdout=subprocess.DEVNULL)
         cls.frames = os.path.join(data, "frames")
         cls.truth = os.path.join(data, "ground_truth")
+        # A second body model, its head, neck and shoulders spread wider.
+        cls.model = os.path.join(cls.work, "wide.vtp")
+        subprocess.run([APP, "body-model", "-o", cls.model, "--spread", "headSize=3", "--spread", "neckLength=3",
+                        "--spread", "shoulderWidth=2"], check=True, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL)
         out = os.path.join(cls.work, "cli")
-        subprocess.run([APP, "align", cls.frames, "-o", out, "--no-report"], check=True,
-                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        subprocess.run([APP, "align", cls.frames, "-o", out, "--no-report", "--model", "builtin", "--model",
+                        cls.model], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         import json
         with open(os.path.join(out, "metrics.json")) as f:
+            cls.metrics = json.load(f)
+        # The kept model's alignment is in OUT, the other's in OUT/models/<i>_<name>.
+        cls.kept = cls.metrics["model_choice"]["kept"]
+        folders = [out if i == cls.kept else os.path.join(out, m["folder"])
+                   for i, m in enumerate(cls.metrics["model_choice"]["models"])]
+        cls.model_positions = [read_positions(os.path.join(f, "aligned", "aligned_*.vtp")) for f in folders]
+        with open(os.path.join(folders[0], "metrics.json")) as f:
             cls.template_frame = json.load(f)["template_frame"]
-        cls.positions = read_positions(os.path.join(out, "aligned", "aligned_*.vtp"))
+        cls.positions = cls.model_positions[0]  # the built-in model's, as the other paths use it
         assert cls.positions.shape[0] == 4
 
     def assertSameAlignment(self, template_frame, positions, path):
@@ -75,8 +89,23 @@ class Equivalence(unittest.TestCase):
 
     def test_python_align(self):
         import clothtrack
-        result = clothtrack.align(self.frames)
-        self.assertSameAlignment(result.template_frame, result.positions.astype(np.float64), "clothtrack.align")
+        result = clothtrack.align(self.frames, model=["builtin", self.model])
+        choice = result.metrics["model_choice"]
+        self.assertEqual(choice["kept"], self.kept)
+        self.assertIs(result, result.model_alignments[self.kept])
+        self.assertEqual(result.metrics["model"], self.metrics["model"])
+        for mine, cli in zip(choice["models"], self.metrics["model_choice"]["models"]):
+            self.assertEqual(mine["model"], cli["model"])
+            for key in ("mean_stretch", "mean_surface_distance_m"):
+                self.assertAlmostEqual(mine[key], cli[key], delta=1e-12, msg=key)
+        builtin = result.model_alignments[0]
+        self.assertEqual(builtin.model, "builtin")
+        self.assertSameAlignment(builtin.template_frame, builtin.positions.astype(np.float64), "clothtrack.align")
+        other = result.model_alignments[1].positions.astype(np.float64)
+        difference = np.abs(other - self.model_positions[1]).max()
+        self.assertLessEqual(difference, TOLERANCE, "clothtrack.align under %s differs by %.3g m" % (self.model, difference))
+        # The two models give two alignments: the comparison above is not of one alignment twice.
+        self.assertGreater(np.abs(other - builtin.positions).max(), 1e-4)
 
     def test_plugin_chain(self):
         if not (PVPYTHON and PLUGIN):
