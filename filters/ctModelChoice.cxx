@@ -12,7 +12,9 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkStringArray.h>
 #include <vtkTable.h>
 
 #include <string>
@@ -84,6 +86,10 @@ int ctModelChoice::RequestData(vtkInformation*, vtkInformationVector** inputVect
           static_cast<vtkAbstractArray*>(distance), static_cast<vtkAbstractArray*>(kept)})
       output->AddColumn(column);
     clothtrack::addFieldValue(output->GetFieldData(), "KeptAlignment", this->KeptAlignment);
+    vtkNew<vtkStringArray> criterion;
+    criterion->SetName("Criterion");
+    criterion->InsertNextValue(clothtrack::modelChoiceCriterion(this->Margin));
+    output->GetFieldData()->AddArray(criterion);
   }
   catch (const clothtrack::Error& e)
   {

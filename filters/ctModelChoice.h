@@ -3,16 +3,17 @@
  * @brief Which of several alignments of one sequence, each made under another body model, to keep.
  *
  * The rule of `clothtrack align --model A --model B` (clothtrack/eval/ModelChoice.h): the first
- * alignment is kept, and replaced by a later one only when that one is both less stretched and
- * closer to the frames, each by more than Margin (a share of the kept one's figure). No ground
- * truth is used.
+ * alignment is kept unless others are both less stretched and closer to the frames than it, each
+ * by more than Margin (a share of the first's figure); of those, the one whose smaller gain of the
+ * two is the largest. No ground truth is used.
  *
  * Input port 0 (one connection per alignment, in the order the models were named): the per-frame
  * table of ctTemplateFit (its output port 1), with the columns Stretch and MeanSurfaceDistance.
  *
  * Output: a vtkTable with one row per alignment: Alignment (its connection index), MeanStretch,
  * MeanSurfaceDistance (metres, means over the frames that have one) and Kept (1 for the kept
- * alignment, else 0); and the field array KeptAlignment (the kept connection index).
+ * alignment, else 0); and the field arrays KeptAlignment (the kept connection index) and
+ * Criterion (the rule in words).
  */
 #ifndef ctModelChoice_h
 #define ctModelChoice_h
@@ -28,7 +29,7 @@ public:
   vtkTypeMacro(ctModelChoice, vtkTableAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Share by which a later alignment's figures must both be lower to replace the kept one.
+  /// Share by which another alignment's figures must both be lower than the first's to replace it.
   vtkSetClampMacro(Margin, double, 0.0, 1.0);
   vtkGetMacro(Margin, double);
 

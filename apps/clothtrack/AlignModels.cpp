@@ -80,11 +80,7 @@ nlohmann::json choiceSummary(const AlignSettings& s, const std::vector<nlohmann:
       if (metrics[i].contains(key)) entry[key] = metrics[i][key];
     models.push_back(entry);
   }
-  const std::string criterion =
-      "the first model, replaced by one whose alignment is less stretched and closer to the "
-      "frames, each by more than " +
-      std::to_string(static_cast<int>(std::lround(100 * kModelChoiceMargin))) + " %";
-  return {{"criterion", criterion}, {"kept", kept}, {"models", models}};
+  return {{"criterion", modelChoiceCriterion()}, {"kept", kept}, {"models", models}};
 }
 
 void printChoice(const nlohmann::json& choice)

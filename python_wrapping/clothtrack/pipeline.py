@@ -162,8 +162,8 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
                     `clothtrack body-model`, `clothtrack import-makehuman`), or a list of these.
                     With a list the sequence is aligned under each, and the alignment kept as
                     `clothtrack align --model A --model B` keeps it (ctModelChoice, no ground
-                    truth): the first, replaced by one both less stretched and closer to the
-                    frames. The result's metrics then hold "model" and "model_choice" as the
+                    truth): the first, unless others are both less stretched and closer to
+                    the frames than it; then the one that gains most. The result's metrics then hold "model" and "model_choice" as the
                     app's metrics.json does, and model_alignments holds every model's Alignment.
     options         further parameters by their snake_case names (docs/parameters.md), e.g.
                     epsilon=0.2, minimum_radius=0.05, minimum_shell_area=0.05, persistence=2,
@@ -294,8 +294,7 @@ def _choose(alignments):
     result = alignments[kept]
     result.metrics["model"] = result.model
     result.metrics["model_choice"] = {
-        "criterion": "the first model, replaced by one whose alignment is less stretched and closer "
-                     "to the frames, each by more than %d %%" % round(100 * choice.GetMargin()),
+        "criterion": table.GetFieldData().GetAbstractArray("Criterion").GetValue(0),
         "kept": kept, "models": models}
     result.model_alignments = alignments
     return result

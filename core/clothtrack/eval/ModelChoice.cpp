@@ -2,6 +2,7 @@
 
 #include <clothtrack/base/Error.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace clothtrack
@@ -23,14 +24,27 @@ double meanOverFrames(const std::vector<double>& perFrame)
 int preferredAlignment(const std::vector<AlignmentFigures>& figures, double margin)
 {
   if (figures.empty()) throw Error("model choice: no alignment to choose from");
+  const AlignmentFigures& first = figures.front();
   int kept = 0;
+  double keptGain = margin;
   for (int i = 1; i < static_cast<int>(figures.size()); ++i)
   {
-    const AlignmentFigures& best = figures[kept];
-    if (figures[i].stretch < best.stretch * (1.0 - margin) &&
-        figures[i].surfaceDistance < best.surfaceDistance * (1.0 - margin))
+    const double gain = std::min(1.0 - figures[i].stretch / first.stretch,
+                                 1.0 - figures[i].surfaceDistance / first.surfaceDistance);
+    if (gain > keptGain)
+    {
       kept = i;
+      keptGain = gain;
+    }
   }
   return kept;
+}
+
+std::string modelChoiceCriterion(double margin)
+{
+  const std::string percent = std::to_string(static_cast<int>(std::lround(100 * margin)));
+  return "the first model, unless others' alignments are both less stretched and closer to the "
+         "frames than its alignment, each by more than " +
+         percent + " %: then the one whose smaller gain of the two is the largest";
 }
 } // namespace clothtrack
