@@ -706,6 +706,7 @@ nlohmann::json evaluate(const Run& run, const AlignedOutput& output, const Seque
   const int n = in.count(), j = run.templateFrame;
   nlohmann::json metrics;
   metrics["input"] = s.input;
+  metrics["clothtrack_version"] = CLOTHTRACK_VERSION; // which release made these results
   metrics["frames"] = n;
   metrics["template_frame"] = j;
   metrics["template_criterion"] = run.templateDecidedBy;

@@ -137,7 +137,7 @@ int dispatch(int argc, char** argv)
   }
   if (name == "--version")
   {
-    std::printf("clothtrack 0.1.0\n");
+    std::printf("clothtrack %s\n", CLOTHTRACK_VERSION);
     return 0;
   }
   return runCommand(name, argc, argv);

@@ -24,4 +24,4 @@ from .ctFilters import *  # noqa: F401,F403
 from .sequence import frames_as_numpy, read_sequence  # noqa: F401
 from .pipeline import Alignment, align  # noqa: F401
 
-__version__ = "0.1.0"
+from ._version import __version__  # noqa: F401,E402  (written by CMake: the project's version)

@@ -12,6 +12,8 @@ foreach (k 0 1 2 3)
 endforeach ()
 
 expect_run(0 "usage: clothtrack" --help)
+# The version is the project's (CMakeLists.txt), not a copy of it.
+expect_run(0 "clothtrack ${VERSION}" --version)
 expect_run(0 "inspect" inspect --help)
 expect_run(0 "tet_3.obj" inspect ${WORK}/seq)
 expect_run(0 "wrote 4 frames" convert ${WORK}/seq -o ${WORK}/out/seq.pvd --obj)

@@ -18,8 +18,18 @@ def write_sequence(folder, count):
 
 class ReaderTest(unittest.TestCase):
     def test_classes_are_exposed(self):
-        for name in ("ctMeshSequenceReader", "ctMeshSequenceWriter", "ctGeodesicDistance", "ctSurfaceTopology"):
+        for name in ("ctMeshSequenceReader", "ctMeshSequenceWriter", "ctGeodesicDistance", "ctSurfaceTopology",
+                     "ctModelChoice"):
             self.assertTrue(hasattr(clothtrack, name), name)
+
+    def test_the_version_is_the_apps(self):
+        app = os.environ.get("CLOTHTRACK_APP")
+        if not app:
+            self.skipTest("CLOTHTRACK_APP is not set")
+        import subprocess
+        out = subprocess.run([app, "--version"], check=True, capture_output=True, text=True).stdout
+        self.assertEqual(out.split(), ["clothtrack", clothtrack.__version__])
+        self.assertRegex(clothtrack.__version__, r"^\d+\.\d+\.\d+$")
 
     def test_temporal_reading_and_numpy(self):
         with tempfile.TemporaryDirectory() as folder:
