@@ -163,8 +163,10 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
                     With a list the sequence is aligned under each, and the alignment kept as
                     `clothtrack align --model A --model B` keeps it (ctModelChoice, no ground
                     truth): the first, unless others are both less stretched and closer to
-                    the frames than it; then the one that gains most. The result's metrics then hold "model" and "model_choice" as the
-                    app's metrics.json does, and model_alignments holds every model's Alignment.
+                    the frames than it; then the one that gains most. The result's metrics then
+                    hold "model" and "model_choice" as the app's metrics.json does, and
+                    model_alignments holds every model's Alignment. Stage names in progress
+                    calls and errors then start with the model, e.g. "mh.vtp: body fit".
     options         further parameters by their snake_case names (docs/parameters.md), e.g.
                     epsilon=0.2, minimum_radius=0.05, minimum_shell_area=0.05, persistence=2,
                     solver_tolerance=1e-5, maximum_truth_distance=0.05, start_from_body=False
@@ -198,14 +200,16 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
     settings = dict(template_frame=template_frame, solver=solver, predict_radius=predict_radius,
                     shape_frames=shape_frames, progress=progress,
                     template_criterion=template_criterion, threads=threads, options=options)
-    alignments = [_align_under(sequence, truth, label, settings) for label in models]
+    alignments = [_align_under(sequence, truth, label, settings, "%s: " % label if len(models) > 1 else "")
+                  for label in models]
     if len(alignments) == 1:
         return alignments[0]
     return _choose(alignments)
 
 
-def _align_under(sequence, truth, model, settings):
-    """One alignment of `sequence` under body model `model` (a label of _models_of)."""
+def _align_under(sequence, truth, model, settings, prefix):
+    """One alignment of `sequence` under body model `model` (a label of _models_of); `prefix`
+    starts its stage names."""
     import clothtrack
 
     options = settings["options"]
@@ -246,6 +250,7 @@ def _align_under(sequence, truth, model, settings):
     stages.update({"body fit": body, "correspondence": correspondence, "template fit": fit})
     if last is not fit:
         stages["alignment error"] = last
+    stages = {prefix + name: algorithm for name, algorithm in stages.items()}
     catchers = {name: _ErrorCatcher(algorithm) for name, algorithm in stages.items()}
     progress = settings["progress"]
     if progress is not None:

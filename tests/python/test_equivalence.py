@@ -89,7 +89,12 @@ class Equivalence(unittest.TestCase):
 
     def test_python_align(self):
         import clothtrack
-        result = clothtrack.align(self.frames, model=["builtin", self.model])
+        stages = set()
+        result = clothtrack.align(self.frames, model=["builtin", self.model],
+                                  progress=lambda stage, _fraction: stages.add(stage))
+        # Under several models each stage's progress names its model.
+        self.assertIn("builtin: body fit", stages)
+        self.assertIn(self.model + ": template fit", stages)
         choice = result.metrics["model_choice"]
         self.assertEqual(choice["kept"], self.kept)
         self.assertIs(result, result.model_alignments[self.kept])
