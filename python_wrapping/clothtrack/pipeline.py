@@ -1,6 +1,7 @@
 """The whole pipeline in one call: clothtrack.align(frames, ...)."""
 
 import os
+import time
 
 import numpy as np
 from vtkmodules.util import numpy_support
@@ -29,8 +30,8 @@ class Alignment:
                     the app); always per_frame_confidence, per_frame_coverage_distance_m,
                     per_frame_fit_attempts, per_frame_body_distance_m and per_frame_extent_gap_m
                     (None where the frame's body is not trusted) and doubtful_frames (frames with
-                    a confidence below 1; the fit stage warns about each); with several body
-                    models also model and model_choice, as in metrics.json
+                    a confidence below 1; the fit stage warns about each), seconds_total; with
+                    several body models also model and model_choice, as in metrics.json
     model           the body model it was made under: "builtin" or the model file as named
     model_alignments  every model's Alignment, in the order the models were named (this one among
                     them); [self] under one model
@@ -256,7 +257,9 @@ def _align_under(sequence, truth, model, settings, prefix):
     if progress is not None:
         for name, algorithm in stages.items():
             algorithm.AddObserver("ProgressEvent", lambda obj, _event, name=name: progress(name, obj.GetProgress()))
+    start = time.monotonic()
     last.Update()
+    seconds = time.monotonic() - start
     for name, catcher in catchers.items():
         if catcher.message:
             raise RuntimeError("%s: %s" % (name, catcher.message))
@@ -270,6 +273,7 @@ def _align_under(sequence, truth, model, settings, prefix):
         errors = np.stack([numpy_support.vtk_to_numpy(a.GetPointData().GetArray("Error")) for a in aligned])
         result = Alignment(aligned, correspondence.GetChosenFrame(), errors, last.GetFrameErrorOutput(), summary)
     result.model = model
+    result.metrics["seconds_total"] = seconds
     return result
 
 
@@ -292,7 +296,7 @@ def _choose(alignments):
                  "mean_stretch": table.GetValueByName(i, "MeanStretch").ToDouble(),
                  "mean_surface_distance_m": table.GetValueByName(i, "MeanSurfaceDistance").ToDouble(),
                  "doubtful_frames": len(alignment.metrics.get("doubtful_frames", []))}
-        for key in ("mean_vertex_error_m", "within_10cm"):
+        for key in ("seconds_total", "mean_vertex_error_m", "within_10cm"):
             if key in alignment.metrics:
                 entry[key] = alignment.metrics[key]
         models.append(entry)

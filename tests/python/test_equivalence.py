@@ -101,6 +101,7 @@ class Equivalence(unittest.TestCase):
         self.assertEqual(result.metrics["model"], self.metrics["model"])
         for mine, cli in zip(choice["models"], self.metrics["model_choice"]["models"]):
             self.assertEqual(mine["model"], cli["model"])
+            self.assertGreater(mine["seconds_total"], 0.5)
             for key in ("mean_stretch", "mean_surface_distance_m"):
                 self.assertAlmostEqual(mine[key], cli[key], delta=1e-12, msg=key)
         builtin = result.model_alignments[0]
