@@ -120,7 +120,7 @@ check(rows.GetNumberOfRows() == 2, "model choice rows %d" % rows.GetNumberOfRows
 stretch = [summary.GetValueByName(k, "Stretch").ToDouble() for k in range(summary.GetNumberOfRows())]
 mean_stretch = rows.GetValueByName(1, "MeanStretch").ToDouble()
 check(abs(mean_stretch - sum(stretch) / len(stretch)) < 1e-12, "model choice mean stretch %g" % mean_stretch)
-check([rows.GetValueByName(k, "Kept").ToInt() for k in range(2)] == [1, 0], "model choice kept the second of two ties")
+check([rows.GetValueByName(k, "Kept").ToInt() for k in range(2)] == [1, 0], "model choice did not keep the first of two ties")
 simple.Delete(choice)
 
 shot = paths[-1]
