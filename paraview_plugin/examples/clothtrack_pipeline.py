@@ -1,7 +1,7 @@
 """The whole ClothTrack pipeline in ParaView, from pvpython or pvbatch.
 
     pvpython --force-offscreen-rendering clothtrack_pipeline.py PLUGIN FRAMES OUT [--ground-truth GT]
-        [--frame-rate FPS] [--state]
+        [--frame-rate FPS] [--model builtin|MODEL.vtp ...] [--state]
 
 PLUGIN is the built ClothTrack.so, FRAMES a folder of frames (e.g. ../shared/data/vlasic-samba, or the
 frames/ folder that `clothtrack synth` writes) and GT a ground-truth sequence with one connectivity
@@ -12,6 +12,11 @@ run it under a virtual one: `python3 python_wrapping/clothtrack/virtual_display.
 
 The pipeline, as in the GUI's ClothTrack menu:
     Sequence Reader -> Body Fit -> Patch Correspondence -> Template Fit -> (Alignment Error) -> Play Sequence
+
+With --model given twice or more (`builtin` or a body model file, as for `clothtrack align --model`),
+one Body Fit -> Patch Correspondence -> Template Fit chain is built per model, each Body Fit reading
+its model with a Body Model Reader, and Model Choice over the Template Fits' Summary outputs keeps one
+alignment, as `clothtrack align --model A --model B` does; the kept chain is the one shown.
 """
 import argparse
 import os
@@ -21,20 +26,59 @@ from paraview.simple import (  # noqa: F401
     Render, ResetCamera, SaveScreenshot, SaveState, Show)
 
 
-def build_pipeline(frames, ground_truth=None, frame_rate=25.0, shape_frames=8):
-    """Creates the pipeline proxies; returns them by name. Nothing runs until a proxy is updated."""
+BUILTIN_MODEL = "builtin"
+
+
+def _alignment_chain(frames, model, shape_frames):
+    """Body Fit -> Patch Correspondence -> Template Fit on the reader `frames` under `model`
+    ("builtin" or a body model file); returns the proxies by name."""
     from paraview import simple
 
+    chain = {"model": model}
+    sequence = OutputPort(frames, 1)
+    chain["body"] = simple.ClothTrackBodyFit(Input=sequence)
+    chain["body"].ShapeFrames = shape_frames
+    if model != BUILTIN_MODEL:
+        if not os.path.isfile(model):
+            raise FileNotFoundError("%s: no such body model file" % model)
+        chain["body model"] = simple.ClothTrackBodyModelReader(FileName=model)
+        chain["body"].BodyModel = chain["body model"]
+    chain["correspondence"] = simple.ClothTrackPatchCorrespondence(
+        Input=sequence, Landmarks=OutputPort(chain["body"], 1))
+    chain["fit"] = simple.ClothTrackTemplateFit(
+        Input=sequence, Correspondence=OutputPort(chain["correspondence"], 0),
+        Landmarks=OutputPort(chain["body"], 1), Bodies=OutputPort(chain["body"], 0))
+    return chain
+
+
+def kept_alignment(choice):
+    """Runs the alignments behind a Model Choice proxy; returns the index of the one it keeps."""
+    from paraview import servermanager
+
+    choice.UpdatePipeline()
+    table = servermanager.Fetch(choice)
+    return int(table.GetFieldData().GetArray("KeptAlignment").GetTuple1(0))
+
+
+def build_pipeline(frames, ground_truth=None, frame_rate=25.0, shape_frames=8, models=None):
+    """Creates the pipeline proxies; returns them by name ("body", "correspondence" and "fit" are the
+    kept chain's). Under one model nothing runs until a proxy is updated. Under several (`models`, a
+    list of "builtin" and model files), building runs the alignments, since the one Model Choice
+    keeps is the one played; every chain is in "chains", the choice in "choice" and the kept
+    chain's index in "kept"."""
+    from paraview import simple
+
+    models = list(models) if models else [BUILTIN_MODEL]
     p = {}
     p["frames"] = simple.ClothTrackSequenceReader(FileName=frames)
     p["frames"].FrameRate = frame_rate
-    p["body"] = simple.ClothTrackBodyFit(Input=OutputPort(p["frames"], 1))
-    p["body"].ShapeFrames = shape_frames
-    p["correspondence"] = simple.ClothTrackPatchCorrespondence(
-        Input=OutputPort(p["frames"], 1), Landmarks=OutputPort(p["body"], 1))
-    p["fit"] = simple.ClothTrackTemplateFit(
-        Input=OutputPort(p["frames"], 1), Correspondence=OutputPort(p["correspondence"], 0),
-        Landmarks=OutputPort(p["body"], 1), Bodies=OutputPort(p["body"], 0))
+    p["chains"] = [_alignment_chain(p["frames"], model, shape_frames) for model in models]
+    kept = 0
+    if len(models) > 1:
+        p["choice"] = simple.ClothTrackModelChoice(Input=[OutputPort(c["fit"], 1) for c in p["chains"]])
+        kept = kept_alignment(p["choice"])
+    p["kept"] = kept
+    p.update({k: p["chains"][kept][k] for k in ("body", "correspondence", "fit")})
     aligned = OutputPort(p["fit"], 0)
     if ground_truth:
         p["truth"] = simple.ClothTrackSequenceReader(FileName=ground_truth)
@@ -86,11 +130,15 @@ def main():
     parser.add_argument("out")
     parser.add_argument("--ground-truth")
     parser.add_argument("--frame-rate", type=float, default=25.0)
+    parser.add_argument("--model", action="append", metavar="MODEL",
+                        help="body model: builtin or a model file; twice or more to keep one by Model Choice")
     parser.add_argument("--state", action="store_true", help="also write OUT/clothtrack.pvsm")
     args = parser.parse_args()
     LoadPlugin(args.plugin, remote=False)  # adds the ClothTrack proxies to paraview.simple
     os.makedirs(args.out, exist_ok=True)
-    pipeline = build_pipeline(args.frames, args.ground_truth, args.frame_rate)
+    pipeline = build_pipeline(args.frames, args.ground_truth, args.frame_rate, models=args.model)
+    if "choice" in pipeline:
+        print("kept the alignment under", pipeline["chains"][pipeline["kept"]]["model"])
     view = show_aligned(pipeline)
     for path in save_frames(pipeline, view, args.out):
         print("wrote", path)

@@ -2,8 +2,8 @@
 (clothtrack align), a C++ filter chain (example_align_sequence), clothtrack.align in Python and the
 ParaView plugin's chain in pvpython must choose the same template frame and give the same aligned
 positions (to 1e-9 m; each path uses every core, and results do not depend on the thread count).
-Under two body models, the command line and clothtrack.align must also keep the same one, by the
-same figures.
+Under two body models, the command line, clothtrack.align and the plugin's chains (Model Choice)
+must also keep the same one, by the same figures.
 """
 import glob
 import os
@@ -121,9 +121,15 @@ class Equivalence(unittest.TestCase):
         display = os.path.join(ROOT, "python_wrapping", "clothtrack", "virtual_display.py")
         subprocess.run([sys.executable, display, "--", PVPYTHON, "--force-offscreen-rendering",
                         os.path.join(ROOT, "tests", "paraview", "equivalence_plugin_chain.py"), PLUGIN,
-                        self.frames, out], check=True, env=env, stdout=subprocess.DEVNULL)
+                        self.frames, self.model, out], check=True, env=env, stdout=subprocess.DEVNULL)
         result = np.load(out)
-        self.assertSameAlignment(int(result["template_frame"]), result["positions"], "plugin chain")
+        self.assertSameAlignment(int(result["template_frame_0"]), result["positions_0"], "plugin chain")
+        difference = np.abs(result["positions_1"] - self.model_positions[1]).max()
+        self.assertLessEqual(difference, TOLERANCE, "plugin chain under %s differs by %.3g m" % (self.model, difference))
+        self.assertEqual(int(result["kept"]), self.kept, "Model Choice kept another alignment")
+        for index, cli in enumerate(self.metrics["model_choice"]["models"]):
+            self.assertAlmostEqual(result["MeanStretch"][index], cli["mean_stretch"], delta=1e-12)
+            self.assertAlmostEqual(result["MeanSurfaceDistance"][index], cli["mean_surface_distance_m"], delta=1e-12)
 
 
 if __name__ == "__main__":
