@@ -141,6 +141,7 @@ vtkSmartPointer<vtkPolyData> fittedBodyPolyData(const clothtrack::BodyModel& mod
   clothtrack::addFieldValue(fd, "InsideFraction", f.insideFraction);
   clothtrack::addFieldValue(fd, "FrameDistance", f.frameDistance);
   clothtrack::addFieldValue(fd, "PreviousGap", f.previousGap);
+  clothtrack::addFieldValue(fd, "ContinuesPrevious", static_cast<int>(f.continuesPrevious));
   return bodyData;
 }
 

@@ -17,8 +17,9 @@
  * with field data FrameIndex, FitStatus (0 ok, 1 poor, 2 failed), Pose (22 axis-angle joint
  * rotations then the translation), RestPoseDistance (sum of the non-root joint angles in
  * radians, NaN unless the fit is ok), MedianDistance, InsideFraction, FrameDistance (mean
- * distance from the frame to the body, m) and PreviousGap (mean surface distance to the frame
- * before, m: above 6 cm the frame is fitted as an unrelated pose); the collection's field
+ * distance from the frame to the body, m), PreviousGap (mean surface distance to the frame
+ * before, m) and ContinuesPrevious (0 when PreviousGap is above 6 cm and the frame was fitted as
+ * an unrelated pose, else 1); the collection's field
  * data holds ShapeCoefficients (beta, the shape kept), MovedShape (1 when that is the one
  * estimated with the key frames' translations moving), OtherShapeCoefficients (the estimate
  * not kept; empty with TwoShapes off) and ShapeGap (the largest distance between the two

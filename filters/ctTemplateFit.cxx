@@ -109,6 +109,25 @@ clothtrack::PosedSkeleton skeletonOf(vtkPolyData* block, const std::string& name
   return out;
 }
 
+/// Frames nothing places (clothtrack::unplacedFrames), from each body's FitStatus and
+/// ContinuesPrevious field data; a body without the latter continues its predecessor.
+std::vector<bool> unplacedFrames(vtkMultiBlockDataSet* bodies)
+{
+  using namespace clothtrack;
+  BodyFitResult fits;
+  for (unsigned k = 0; k < bodies->GetNumberOfBlocks(); ++k)
+  {
+    auto* block = vtkPolyData::SafeDownCast(bodies->GetBlock(k));
+    vtkFieldData* fd = block ? block->GetFieldData() : nullptr;
+    vtkDataArray* status = fd ? fd->GetArray("FitStatus") : nullptr;
+    vtkDataArray* continues = fd ? fd->GetArray("ContinuesPrevious") : nullptr;
+    BodyFrameFit& f = fits.frames.emplace_back();
+    if (status) f.status = static_cast<BodyFitStatus>(static_cast<int>(status->GetTuple1(0)));
+    f.continuesPrevious = !continues || continues->GetTuple1(0) != 0;
+  }
+  return clothtrack::unplacedFrames(fits);
+}
+
 /// The template posed by each frame's fitted body (ctBodyFit output 0), nothing where the body
 /// is not trusted (bodyPosedTemplate).
 clothtrack::TemplatePosedByBody posedByBody(vtkMultiBlockDataSet* sequence,
@@ -399,8 +418,9 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     // Nothing is passed on unjudged: each frame's confidence, and a warning for a doubtful one.
     std::vector<const TriangleMesh*> framePointers;
     for (const TriangleMesh& frame : frames) framePointers.push_back(&frame);
-    const SequenceQuality quality =
+    SequenceQuality quality =
         fittedSequenceQuality(fits, templateMesh.F, framePointers, j, {}, posed);
+    if (bodies) doubtUnplacedFrames(quality, unplacedFrames(bodies));
     for (int k : quality.doubtfulFrames)
       vtkWarningMacro(<< "template fit: " << frameName(sequence->GetBlock(k), k)
                       << " is doubtful: " << quality.confidence[k].doubt);

@@ -35,7 +35,10 @@
  * confidence (clothtrack/eval/FrameConfidence.h): CoverageDistance, Stretch, Folded,
  * BodyDistance (to the template posed by the frame's body from input 3; NaN without a trusted
  * body), ExtentGap (lowest and highest points against that posed template's; NaN likewise),
- * Confidence. A doubtful frame is also a warning saying why.
+ * Confidence. A frame whose body is not ok and does not continue its predecessor (ctBodyFit's
+ * FitStatus and ContinuesPrevious) had nothing to place its start and is doubtful whatever it
+ * measures (confidence 0.5; clothtrack/eval/SequenceQuality.h, doubtUnplacedFrames). A doubtful
+ * frame is also a warning saying why.
  *
  * A corrupt frame, a correspondence block that does not match the template or non-finite
  * input is an error naming the frame; a frame without correspondence is fitted from nearest

@@ -689,13 +689,23 @@ SequenceQuality measureQuality(const Run& run, const AlignedOutput& output)
       sequenceQualityOfFrames([&](int k) { return alignedPositions(run, output, k); },
                               run.templateMesh().F, *run.input.frames, known, run.templateFrame,
                               FitJudgeOptions().limits, run.posedByBody, from, to);
+  SequenceQuality quality;
   if (ranks::count() == 1)
   {
     summarise(part);
-    return part;
+    quality = std::move(part);
   }
-  const std::vector<std::string> parts = ranks::gatherBytes(encodeSequenceQuality(part, from, to));
-  return ranks::leader() ? joinSequenceQuality(parts, n) : SequenceQuality();
+  else
+  {
+    const std::vector<std::string> parts =
+        ranks::gatherBytes(encodeSequenceQuality(part, from, to));
+    if (!ranks::leader()) return SequenceQuality();
+    quality = joinSequenceQuality(parts, n);
+  }
+  // Frames whose start came from an unrelated frame's fit are doubtful whatever they measure.
+  if (static_cast<int>(run.body.body.frames.size()) == n && !quality.confidence.empty())
+    doubtUnplacedFrames(quality, unplacedFrames(run.body.body));
+  return quality;
 }
 
 /// metrics.json: inputs, template, errors (with a ground truth), quality without one, timings.

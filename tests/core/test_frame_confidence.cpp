@@ -181,6 +181,34 @@ TEST(FrameConfidence, SequenceQualityJudgesFramesWithATrustedBodyByIt)
   EXPECT_TRUE(sequenceQuality(aligned, kSphere.F, frames, {}, 0).doubtfulFrames.empty());
 }
 
+TEST(FrameConfidence, AFrameNothingPlacedIsDoubtfulWhateverItMeasures)
+{
+  // Frame 1 is the slid template of the test above, with no body to show it: every measure is
+  // within its limit. Frame 2 is stretched and doubtful already.
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(M_PI / 6, Vec3::UnitZ()).toRotationMatrix();
+  const Points slid = kSphere.V * R.transpose();
+  const Points stretched = 2.0 * kSphere.V;
+  const TriangleMesh stretchedFrame{stretched, kSphere.F};
+  const std::vector<const Points*> aligned = {&kSphere.V, &slid, &stretched, &kSphere.V};
+  const std::vector<const TriangleMesh*> frames = {&kSphere, &kSphere, &stretchedFrame, &kSphere};
+  SequenceQuality q = sequenceQuality(aligned, kSphere.F, frames, {}, 0);
+  ASSERT_EQ(q.doubtfulFrames, std::vector<int>{2});
+  const double stretchedSeverity = q.confidence[2].severity;
+  ASSERT_GT(stretchedSeverity, kUnplacedSeverity);
+
+  doubtUnplacedFrames(q, {false, true, true, false});
+  EXPECT_EQ(q.doubtfulFrames, (std::vector<int>{1, 2}));
+  EXPECT_EQ(q.confidence[1].severity, kUnplacedSeverity);
+  EXPECT_EQ(q.confidence[1].confidence, 0.5);
+  EXPECT_EQ(q.confidence[1].doubt, "no trusted body, and unlike the frame before it");
+  // A frame past its limits keeps its severity and says both.
+  EXPECT_EQ(q.confidence[2].severity, stretchedSeverity);
+  EXPECT_NE(q.confidence[2].doubt.find("stretch"), std::string::npos);
+  EXPECT_NE(q.confidence[2].doubt.find(", no trusted body"), std::string::npos);
+  EXPECT_EQ(q.confidence[3].confidence, 1.0);
+  EXPECT_THROW(doubtUnplacedFrames(q, {true}), Error);
+}
+
 TEST(FrameConfidence, MismatchedVertexCountsAreAnError)
 {
   const Points fewer = kSphere.V.topRows(10);

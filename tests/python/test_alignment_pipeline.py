@@ -94,6 +94,30 @@ class AlignmentPipelineTest(unittest.TestCase):
             self.assertEqual(int(np.isfinite(with_error).sum()), int(has_truth.sum()))
         summary = fit.GetSummaryOutput()
         self.assertEqual(summary.GetNumberOfRows(), FRAMES)
+        self.assert_unplaced_frame_is_doubtful(sequence, body, correspondence, j)
+
+    def assert_unplaced_frame_is_doubtful(self, sequence, body, correspondence, j):
+        """A frame whose body is doubtful and unlike its predecessor's had nothing to start it:
+        its confidence is halved, whatever it measures."""
+        bodies = vtkMultiBlockDataSet()
+        bodies.DeepCopy(body.GetOutputDataObject(0))
+        k = (j + 1) % FRAMES
+        fields = bodies.GetBlock(k).GetFieldData()
+        self.assertEqual(fields.GetArray("ContinuesPrevious").GetTuple1(0), 1)
+        fit = clothtrack.ctTemplateFit()
+        fit.SetInputData(0, sequence)
+        fit.SetInputConnection(1, correspondence.GetOutputPort(0))
+        fit.SetInputData(3, bodies)
+        fit.Update()
+        confident = as_numpy(fit.GetSummaryOutput().GetColumnByName("Confidence"))
+        self.assertTrue(np.all(confident == 1.0), confident)
+        fields.GetArray("FitStatus").SetTuple1(0, 1)  # poor
+        fields.GetArray("ContinuesPrevious").SetTuple1(0, 0)
+        bodies.Modified()
+        fit.Update()
+        confidence = as_numpy(fit.GetSummaryOutput().GetColumnByName("Confidence"))
+        self.assertEqual(confidence[k], 0.5)
+        self.assertTrue(np.all(np.delete(confidence, k) == 1.0), confidence)
 
 
 if __name__ == "__main__":

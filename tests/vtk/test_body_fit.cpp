@@ -796,6 +796,7 @@ TEST(BodyFit, FilterOutputsBodiesLandmarksAndStatus)
   ASSERT_NE(body, nullptr);
   EXPECT_EQ(body->GetNumberOfPoints(), builtinBodyModel().numVertices());
   EXPECT_EQ(body->GetFieldData()->GetArray("FitStatus")->GetTuple1(0), 0);
+  EXPECT_EQ(body->GetFieldData()->GetArray("ContinuesPrevious")->GetTuple1(0), 1);
   EXPECT_EQ(body->GetFieldData()->GetArray("Pose")->GetNumberOfTuples(), NumJoints * 3 + 3);
 
   vtkMultiBlockDataSet* landmarks = fit->GetLandmarksOutput();

@@ -180,6 +180,19 @@ TEST(BodyStartPrediction, FramesWithADoubtfulBodyStartFromTheFallback)
   EXPECT_EQ(fallback(1, 0, templ.V), fallbackStart);
 }
 
+TEST(BodyStartPrediction, ADoubtfulBodyUnlikeItsPredecessorLeavesItsFrameUnplaced)
+{
+  BodyFitResult body;
+  body.frames.resize(5);
+  body.frames[1].status = BodyFitStatus::Poor; // tracked from its predecessor: placed by it
+  body.frames[2].status = BodyFitStatus::Poor;
+  body.frames[2].continuesPrevious = false;
+  body.frames[3].continuesPrevious = false; // an unrelated pose with a body that fits
+  body.frames[4].status = BodyFitStatus::Failed;
+  body.frames[4].continuesPrevious = false;
+  EXPECT_EQ(unplacedFrames(body), (std::vector<bool>{false, false, true, false, true}));
+}
+
 TEST(BodyStartPrediction, TheStartIsStretchedToItsFramesHeight)
 {
   BodyFitResult body;

@@ -5,8 +5,10 @@
 #include <clothtrack/base/Parallel.h>
 #include <clothtrack/mesh/SurfaceLocator.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace clothtrack
 {
@@ -120,6 +122,23 @@ void summarise(SequenceQuality& q)
   q.meanSurfaceDistance = mean(q.surfaceDistance);
   q.meanCoverageDistance = mean(q.coverageDistance);
   q.meanJitter = mean(q.jitter);
+}
+
+void doubtUnplacedFrames(SequenceQuality& q, const std::vector<bool>& unplaced)
+{
+  if (unplaced.size() != q.confidence.size())
+    throw Error("Sequence quality: " + std::to_string(unplaced.size()) + " placement flags for " +
+                std::to_string(q.confidence.size()) + " frames.");
+  for (size_t k = 0; k < unplaced.size(); ++k)
+  {
+    if (!unplaced[k]) continue;
+    FrameConfidence& c = q.confidence[k];
+    c.severity = std::max(c.severity, kUnplacedSeverity);
+    c.confidence = std::clamp(2.0 - c.severity, 0.0, 1.0);
+    c.doubt += (c.doubt.empty() ? "" : ", ") +
+               std::string("no trusted body, and unlike the frame before it");
+  }
+  summarise(q);
 }
 
 std::string encodeSequenceQuality(const SequenceQuality& q, int from, int to)

@@ -50,6 +50,19 @@ SequenceQuality sequenceQuality(const AlignedAccess& aligned, const Triangles& t
                                 int templateFrame = -1, const FrameConfidenceOptions& options = {},
                                 const TemplatePosedByBody& posedByBody = {});
 
+/// The severity doubtUnplacedFrames gives: past every limit's 1, so the frame is doubtful
+/// (confidence 0.5), whatever its measures say.
+inline constexpr double kUnplacedSeverity = 1.5;
+
+/// Marks each frame k with `unplaced[k]` doubtful and lists the doubtful frames again. An
+/// unplaced frame had nothing to start it: its body fit is not trusted and it does not continue
+/// its predecessor (an unrelated pose of a collection), so its fit started from an unrelated
+/// frame's. Its measures can all be within their limits: the template, dragged onto the frame
+/// from another pose, still covers it (a collection's frame 23 cm off, pipeline/
+/// BodyStartPrediction.h, unplacedFrames). Throws Error when the list does not have one entry
+/// per frame.
+void doubtUnplacedFrames(SequenceQuality& quality, const std::vector<bool>& unplaced);
+
 // Processes sharing a run each measure their part of the sequence (rangePart), send it as
 // bytes (encodeSequenceQuality), and one joins the parts (joinSequenceQuality): the result is
 // sequenceQuality's, bit for bit.

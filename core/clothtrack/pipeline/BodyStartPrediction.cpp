@@ -56,6 +56,14 @@ TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResul
   return bodyPosedTemplate(templateMesh, templateFrame, fittedBodies(model, body, templateFrame));
 }
 
+std::vector<bool> unplacedFrames(const BodyFitResult& body)
+{
+  std::vector<bool> unplaced;
+  for (const BodyFrameFit& f : body.frames)
+    unplaced.push_back(f.status != BodyFitStatus::Ok && !f.continuesPrevious);
+  return unplaced;
+}
+
 std::optional<Points> bodyPosedStart(const TemplatePosedByBody& posed,
                                      const std::function<FramePtr(int)>& frames, int k)
 {

@@ -35,6 +35,11 @@ TemplatePosedByBody bodyPosedTemplate(const TriangleMesh& templateMesh, int temp
 TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResult& body,
                                       const TriangleMesh& templateMesh, int templateFrame);
 
+/// Frames nothing places (eval/SequenceQuality.h, doubtUnplacedFrames): their body fit is not
+/// ok, so they have no body start, and they do not continue their predecessor
+/// (BodyFrameFit::continuesPrevious), so the fallback carries an unrelated frame's fit to them.
+std::vector<bool> unplacedFrames(const BodyFitResult& body);
+
 /// The start of frame k: the template posed by frame k's body. Frames without one start from
 /// `fallback` (which may be empty: the neighbour's fit as it is). With `frames`, each posed
 /// template is first stretched to its frame's extent (stretchToFrameExtent).
