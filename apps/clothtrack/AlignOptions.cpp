@@ -121,6 +121,10 @@ void addCorrespondenceOptions(po::options_description& options, AlignSettings& s
   options.add_options()(
       "template-frame,template", po::value(&s.forcedTemplate)->default_value(-1),
       "template frame within the selected frames (-1: chosen automatically; also --template)")(
+      "template-candidates", po::value(&s.templateCandidates)->default_value(0),
+      "align under this many template frames, the next by pose after the chosen one, and keep "
+      "the alignment that is both less stretched and closer to the frames (0: 3 on a "
+      "collection of unrelated poses, 1 on a sequence)")(
       "template-criterion", po::value(&criterion)->default_value(criterion),
       "last template criterion after the topology: rest-pose (fitted body closest to the rest "
       "pose) or area-ratio (the paper's: most uniform mesh)")(
@@ -181,6 +185,7 @@ void check(const AlignSettings& s)
   const TemplateFitOptions& fit = s.fit;
   const PatchCorrespondenceOptions& patches = s.patches;
   if (s.threads < 0) throw UsageError{"--threads must be 0 or more"};
+  if (s.templateCandidates < 0) throw UsageError{"--template-candidates must be 0 or more"};
   if (s.modelPaths.size() > 1 && s.mode != AlignMode::Full)
     throw UsageError{"several --model values need the whole 'clothtrack align'"};
   for (const std::string& path : s.modelPaths)

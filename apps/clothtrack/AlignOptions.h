@@ -47,6 +47,9 @@ struct AlignSettings
   /// Chains of the template fit (sequenceChains); 0: two, or one per process under mpirun.
   int chains = 0;
   int forcedTemplate = -1; ///< -1: chosen automatically
+  /// Template frames aligned under, one alignment kept (AlignTemplates.h); 0: three on a
+  /// collection of poses, one on a sequence.
+  int templateCandidates = 0;
   TemplateSelectionOptions selection;
   TruthAnchorOptions truth;
   StartPredictionOptions prediction;

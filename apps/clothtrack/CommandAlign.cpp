@@ -7,6 +7,7 @@
 #include "AlignInput.h"
 #include "AlignModels.h"
 #include "AlignOptions.h"
+#include "AlignTemplates.h"
 #include "AlignedOutput.h"
 #include "BackgroundWriter.h"
 #include "BodyFitRun.h"
@@ -95,6 +96,9 @@ struct Run
   StoredLandmarks landmarks; ///< each frame's, read from the body stage's file when needed
   int templateFrame = -1;
   std::string templateDecidedBy = "given";
+  /// The frames the rest-pose criterion would choose in turn (templateFramesByPose); empty when
+  /// the template was given or chosen otherwise.
+  std::vector<int> templateFramesByPose;
   /// The template posed by each frame's fitted body: fit starts, and their judge. Empty when
   /// the body was not fitted.
   TemplatePosedByBody posedByBody;
@@ -280,10 +284,12 @@ void runTemplateStage(Run& run)
   run.templateFrame = s.forcedTemplate; // in range (checkForcedTemplate)
   if (run.templateFrame < 0)
   {
-    const TemplateSelection chosen =
-        chooseTemplateFrame(*run.input.frames, s.selection, restPoseDistances(run.body.body));
+    const std::vector<double> distances = restPoseDistances(run.body.body);
+    const TemplateSelection chosen = chooseTemplateFrame(*run.input.frames, s.selection, distances);
     run.templateFrame = chosen.chosen;
     run.templateDecidedBy = templateCriterionName(chosen.decidedBy);
+    if (chosen.decidedBy == TemplateCriterion::RestPose)
+      run.templateFramesByPose = templateFramesByPose(chosen, distances);
   }
   const int j = run.templateFrame;
   run.templateHeld = run.input.frame(j);
@@ -720,6 +726,8 @@ nlohmann::json evaluate(const Run& run, const AlignedOutput& output, const Seque
   metrics["frames"] = n;
   metrics["template_frame"] = j;
   metrics["template_criterion"] = run.templateDecidedBy;
+  if (!run.templateFramesByPose.empty())
+    metrics["template_frames_by_pose"] = run.templateFramesByPose;
   metrics["template_file"] = in.files[j];
   metrics["template_vertices"] = run.templateMesh().numVertices();
   metrics["frame_numbers"] = in.frameNumber;
@@ -929,10 +937,14 @@ int alignCommand(const Args& args, AlignMode mode)
 {
   std::optional<AlignSettings> settings = parseAlignSettings(args, mode);
   if (!settings) return 0;
+  const auto alignUnderItsTemplates = [mode](const AlignSettings& one)
+  {
+    return alignChoosingTemplate(one,
+                                 [mode](const AlignSettings& t) { return alignOnce(t, mode); });
+  };
   if (settings->modelPaths.size() > 1)
-    return alignUnderEachModel(*settings,
-                               [mode](const AlignSettings& one) { return alignOnce(one, mode); });
-  return alignOnce(*settings, mode);
+    return alignUnderEachModel(*settings, alignUnderItsTemplates);
+  return alignUnderItsTemplates(*settings);
 }
 } // namespace
 

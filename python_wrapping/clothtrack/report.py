@@ -293,23 +293,41 @@ def _confidence_section(metrics, image):
     return parts
 
 
+def _choice_rows(entries, kept, label):
+    """One row per alignment of a choice: its label (the kept one marked), figures and folder."""
+    rows = []
+    for i, entry in enumerate(entries):
+        figures = "mean stretch %.4f, surface distance %.2f mm" % (entry["mean_stretch"],
+                                                                   1000 * entry["mean_surface_distance_m"])
+        if "mean_vertex_error_m" in entry:
+            figures += ", mean vertex error %.2f cm" % (100 * entry["mean_vertex_error_m"])
+        rows.append(("%s%s" % (label(entry), " (kept)" if i == kept else ""), "%s; %s" % (figures, entry["folder"])))
+    return rows
+
+
 def _model_section(metrics):
     """Which body model the alignment was kept under, and every model's figures
     (`align --model A --model B`)."""
     choice = metrics.get("model_choice")
     if not choice:
         return []
-    rows = []
-    for i, m in enumerate(choice["models"]):
-        figures = "mean stretch %.4f, surface distance %.2f mm" % (m["mean_stretch"],
-                                                                   1000 * m["mean_surface_distance_m"])
-        if "mean_vertex_error_m" in m:
-            figures += ", mean vertex error %.2f cm" % (100 * m["mean_vertex_error_m"])
-        rows.append(("%s%s" % (m["model"], " (kept)" if i == choice["kept"] else ""),
-                     "%s; %s" % (figures, m["folder"])))
+    rows = _choice_rows(choice["models"], choice["kept"], lambda m: m["model"])
     return ["<h2>Body model</h2>",
             "<p>Aligned under %d body models; kept: %s (%s).</p>"
             % (len(choice["models"]), html.escape(metrics["model"]), html.escape(choice["criterion"])),
+            _table(rows)]
+
+
+def _template_section(metrics):
+    """Which template frame the alignment was kept under, and every candidate's figures (a
+    collection of poses, or `align --template-candidates N`)."""
+    choice = metrics.get("template_choice")
+    if not choice:
+        return []
+    rows = _choice_rows(choice["candidates"], choice["kept"], lambda c: "template frame %d" % c["template_frame"])
+    return ["<h2>Template frame</h2>",
+            "<p>Aligned under %d template frames; kept: frame %d (%s).</p>"
+            % (len(choice["candidates"]), choice["kept_template_frame"], html.escape(choice["criterion"])),
             _table(rows)]
 
 
@@ -370,6 +388,7 @@ def write_report(out):
     body = ["<h1>ClothTrack alignment report</h1>", _table(rows), "<h2>Per frame</h2>"]
     body += ['<img src="images/%s" alt="%s">' % (p, p) for p in plots]
     body += _model_section(metrics)
+    body += _template_section(metrics)
     body += _confidence_section(metrics, _confidence_plot(metrics, images))
     body.append("<h2>Frames</h2>")
     shown = set()

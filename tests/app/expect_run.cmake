@@ -30,3 +30,10 @@ function(expect_early_error expected_text)
     message(FATAL_ERROR "clothtrack ${ARGN}: the error came after the body fit:\n${last_output}")
   endif ()
 endfunction()
+
+# read_json(OUT FILE KEYS...): the value at KEYS (names or indices) of the JSON file FILE.
+function(read_json out file)
+  file(READ ${file} text)
+  string(JSON value GET "${text}" ${ARGN})
+  set(${out} ${value} PARENT_SCOPE)
+endfunction()

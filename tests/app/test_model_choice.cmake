@@ -4,12 +4,6 @@
 file(REMOVE_RECURSE ${WORK})
 include(${CMAKE_CURRENT_LIST_DIR}/expect_run.cmake)
 
-function(read_json out file)
-  file(READ ${file} text)
-  string(JSON value GET "${text}" ${ARGN})
-  set(${out} ${value} PARENT_SCOPE)
-endfunction()
-
 expect_run(0 "wrote 3 frames" synth --preset skirt-turn --frames 3 --seed 3 --voxel 0.025 -o ${WORK}/synth)
 # The built-in model written to a file: a second model as good as the first.
 expect_run(0 "wrote" body-model -o ${WORK}/copy.vtp)

@@ -77,6 +77,26 @@ TEST(TemplateSelection, RestPoseAmongTheTopologicalCandidates)
   EXPECT_THROW(selectTemplate(frames, options, {1.0, 2.0}), Error);
 }
 
+TEST(TemplateSelection, FramesByPoseAreTheCandidatesNearestRestFirst)
+{
+  // Frame 1 is not a candidate (genus 1); frame 4's pose is unknown.
+  const std::vector<FrameTopology> frames = {frame(1, 0, 2.0), frame(1, 1, 1.0), frame(1, 0, 9.0),
+                                             frame(1, 0, 3.0), frame(1, 0, 1.5)};
+  const std::vector<double> pose = {2.0, 0.1, 0.5, 0.5, NAN};
+  const TemplateSelection s = selectTemplate(frames, {}, pose);
+  EXPECT_EQ(templateFramesByPose(s, pose), (std::vector<int>{2, 3, 0}));
+  EXPECT_TRUE(templateFramesByPose(s, {1.0, 2.0}).empty());
+}
+
+TEST(TemplateSelection, ACollectionOfPosesMostlyBreaksWithItsPredecessor)
+{
+  EXPECT_FALSE(isCollectionOfPoses({true, true, true, false, true}));
+  EXPECT_TRUE(isCollectionOfPoses({true, false, true, false, true}));
+  EXPECT_TRUE(isCollectionOfPoses({true, false, false, false}));
+  EXPECT_FALSE(isCollectionOfPoses({false}));
+  EXPECT_FALSE(isCollectionOfPoses({}));
+}
+
 TEST(TemplateSelection, RestPoseOnlyFromBodiesThatExplainTheirFrame)
 {
   // Four ok fits; the one nearest the rest pose left a raised arm of its frame unexplained (its

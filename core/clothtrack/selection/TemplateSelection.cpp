@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace clothtrack
@@ -93,4 +94,24 @@ TemplateSelection selectTemplate(const std::vector<FrameTopology>& frames,
   }
   return s;
 }
+std::vector<int> templateFramesByPose(const TemplateSelection& selection,
+                                      const std::vector<double>& restPoseDistance)
+{
+  std::vector<int> frames;
+  if (restPoseDistance.size() != selection.candidate.size()) return frames;
+  for (size_t k = 0; k < restPoseDistance.size(); ++k)
+    if (selection.candidate[k] && std::isfinite(restPoseDistance[k]))
+      frames.push_back(static_cast<int>(k));
+  std::stable_sort(frames.begin(), frames.end(),
+                   [&](int a, int b) { return restPoseDistance[a] < restPoseDistance[b]; });
+  return frames;
+}
+
+bool isCollectionOfPoses(const std::vector<bool>& continuesPrevious)
+{
+  if (continuesPrevious.size() < 2) return false;
+  const auto unrelated = std::count(continuesPrevious.begin() + 1, continuesPrevious.end(), false);
+  return 2 * unrelated >= static_cast<std::ptrdiff_t>(continuesPrevious.size() - 1);
+}
+
 } // namespace clothtrack

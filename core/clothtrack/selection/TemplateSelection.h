@@ -60,4 +60,15 @@ FrameTopology frameTopology(const TriangleMesh& mesh, double minimumShellArea);
 TemplateSelection selectTemplate(const std::vector<FrameTopology>& frames,
                                  const TemplateSelectionOptions& options,
                                  const std::vector<double>& restPoseDistance = {});
+
+/// The topological candidates of `selection` with a known pose (a finite `restPoseDistance`),
+/// nearest the rest pose first (ties to the earliest frame): the frames the rest-pose criterion
+/// would choose in turn. Empty when `restPoseDistance` does not have one entry per frame.
+std::vector<int> templateFramesByPose(const TemplateSelection& selection,
+                                      const std::vector<double>& restPoseDistance);
+
+/// Whether frames fitted one after the other are a collection of unrelated poses rather than a
+/// sequence: at least half of the frames after the first do not continue their predecessor
+/// (`continuesPrevious`, one per frame, BodyFrameFit::continuesPrevious).
+bool isCollectionOfPoses(const std::vector<bool>& continuesPrevious);
 } // namespace clothtrack
