@@ -37,3 +37,13 @@ function(read_json out file)
   string(JSON value GET "${text}" ${ARGN})
   set(${out} ${value} PARENT_SCOPE)
 endfunction()
+
+# expect_files(FOLDER WHAT FILES...): each of FILES (relative to FOLDER) exists; WHAT names the
+# command that should have written them.
+function(expect_files folder what)
+  foreach (f ${ARGN})
+    if (NOT EXISTS ${folder}/${f})
+      message(FATAL_ERROR "${what} did not write ${f}")
+    endif ()
+  endforeach ()
+endfunction()

@@ -14,13 +14,10 @@ endfunction()
 expect_run(0 "wrote 6 frames" synth --preset skirt-turn --frames 6 --seed 3 -o ${WORK}/synth)
 expect_run(0 "aligned 6 frames" align ${WORK}/synth/frames --ground-truth ${WORK}/synth/ground_truth
   --markers ${WORK}/synth/markers.csv -o ${WORK}/out)
-foreach (f aligned.pvd aligned/aligned_0000.vtp aligned/aligned_0005.vtp metrics.json work/landmarks.jsonl
-         body_fit.json report.html images/per_frame_error.png images/cumulative_error.png
-         images/confidence.png)
-  if (NOT EXISTS ${WORK}/out/${f})
-    message(FATAL_ERROR "align did not write ${f}")
-  endif ()
-endforeach ()
+expect_files(${WORK}/out "align"
+  aligned.pvd aligned/aligned_0000.vtp aligned/aligned_0005.vtp metrics.json work/landmarks.jsonl
+  body_fit.json report.html images/per_frame_error.png images/cumulative_error.png
+  images/confidence.png)
 file(GLOB correspondence_images ${WORK}/out/images/correspondence_*.png)
 if (NOT correspondence_images)
   message(FATAL_ERROR "the report has no correspondence image")

@@ -90,11 +90,8 @@ expect_run(1 "no such file or folder" simulate-capture ${WORK}/none -o ${WORK}/c
 
 # synth: a short dress-walk with every output.
 expect_run(0 "wrote 3 frames of 'dress-walk'" synth --preset dress-walk --frames 3 --seed 7 -o ${WORK}/synth)
-foreach (f frames/frame_0002.obj ground_truth/frame_0002.obj source_map/frame_0002.vtp body.json markers.csv)
-  if (NOT EXISTS ${WORK}/synth/${f})
-    message(FATAL_ERROR "synth did not write ${f}")
-  endif ()
-endforeach ()
+expect_files(${WORK}/synth "synth"
+  frames/frame_0002.obj ground_truth/frame_0002.obj source_map/frame_0002.vtp body.json markers.csv)
 file(STRINGS ${WORK}/synth/markers.csv marker_lines)
 list(LENGTH marker_lines marker_count)
 if (NOT marker_count EQUAL 43) # header + 3 frames x 14 markers
@@ -112,11 +109,8 @@ expect_run(0 "chosen by area-ratio" select-template ${WORK}/synth/frames --templ
 
 # body-fit on the synthetic capture: bodies, landmarks and a summary whose figures are sane.
 expect_run(0 "fitted 3 frames" body-fit ${WORK}/synth/frames -o ${WORK}/bodyfit --shape-frames 2)
-foreach (f bodies.pvd bodies/bodies_0002.vtp landmarks.pvd landmarks/landmarks_0002.vtp body_fit.json)
-  if (NOT EXISTS ${WORK}/bodyfit/${f})
-    message(FATAL_ERROR "body-fit did not write ${f}")
-  endif ()
-endforeach ()
+expect_files(${WORK}/bodyfit "body-fit"
+  bodies.pvd bodies/bodies_0002.vtp landmarks.pvd landmarks/landmarks_0002.vtp body_fit.json)
 file(READ ${WORK}/bodyfit/body_fit.json summary)
 string(JSON found GET "${summary}" landmarks_found_fraction)
 string(JSON status GET "${summary}" per_frame 1 status)

@@ -16,12 +16,9 @@ expect_early_error("several --model values need the whole 'clothtrack align'" co
 
 expect_run(0 "kept the alignment under model builtin" align ${input} -o ${WORK}/out
   --model builtin --model ${WORK}/copy.vtp --no-report)
-foreach (f aligned.pvd aligned/aligned_0002.vtp body_fit.json metrics.json
-         models/0_builtin/metrics.json models/1_copy/metrics.json models/1_copy/aligned.pvd)
-  if (NOT EXISTS ${WORK}/out/${f})
-    message(FATAL_ERROR "align with two models did not write ${f}")
-  endif ()
-endforeach ()
+expect_files(${WORK}/out "align with two models"
+  aligned.pvd aligned/aligned_0002.vtp body_fit.json metrics.json
+  models/0_builtin/metrics.json models/1_copy/metrics.json models/1_copy/aligned.pvd)
 if (EXISTS ${WORK}/out/models/0_builtin/aligned.pvd)
   message(FATAL_ERROR "the kept alignment was not moved out of models/0_builtin")
 endif ()

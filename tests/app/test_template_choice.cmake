@@ -54,11 +54,8 @@ if (NOT mean STREQUAL kept_mean OR mean GREATER 0.04)
   message(FATAL_ERROR "metrics.json: mean error ${mean}, the kept candidate's ${kept_mean}")
 endif ()
 # The kept alignment is in OUT, with the report.
-foreach (f aligned.pvd aligned/aligned_0003.vtp body_fit.json report.html)
-  if (NOT EXISTS ${WORK}/out/${f})
-    message(FATAL_ERROR "align with two templates did not write ${f}")
-  endif ()
-endforeach ()
+expect_files(${WORK}/out "align with two templates"
+  aligned.pvd aligned/aligned_0003.vtp body_fit.json report.html)
 if (kept EQUAL 1 AND EXISTS ${WORK}/out/templates/frame_${second}/aligned.pvd)
   message(FATAL_ERROR "the kept alignment was not moved out of templates/frame_${second}")
 endif ()

@@ -94,6 +94,7 @@ TemplateSelection selectTemplate(const std::vector<FrameTopology>& frames,
   }
   return s;
 }
+
 std::vector<int> templateFramesByPose(const TemplateSelection& selection,
                                       const std::vector<double>& restPoseDistance)
 {
@@ -113,5 +114,4 @@ bool isCollectionOfPoses(const std::vector<bool>& continuesPrevious)
   const auto unrelated = std::count(continuesPrevious.begin() + 1, continuesPrevious.end(), false);
   return 2 * unrelated >= static_cast<std::ptrdiff_t>(continuesPrevious.size() - 1);
 }
-
 } // namespace clothtrack
