@@ -452,6 +452,20 @@ TEST(BodyFit, CountsArmsThatCrossThroughTheTorso)
   EXPECT_GT(through, 0.3);
 }
 
+/// The built-in body (beta_0 = 0.8) in each of `poses`, unclothed: a collection of poses.
+Sequence unclothedPoses(const std::vector<BodyPose>& poses)
+{
+  Sequence collection;
+  collection.beta = Eigen::VectorXd::Zero(builtinBodyModel().numShapeComponents());
+  collection.beta[0] = 0.8;
+  for (const BodyPose& p : poses)
+  {
+    collection.poses.push_back(p);
+    collection.captures.push_back(builtinBodyModel().posed(collection.beta, p));
+  }
+  return collection;
+}
+
 /// Two unrelated poses of an unclothed man (beta_0 = 0.8): a standing one, and one turned half
 /// round with the left leg raised forward and out; in the order given by `raisedFirst`.
 Sequence twoUnrelatedPoses(bool raisedFirst)
@@ -485,15 +499,7 @@ Sequence twoUnrelatedPoses(bool raisedFirst)
                                                 {RightKnee, {0.08, 0, 0}},
                                                 {RightAnkle, {-0.16, 0, 0}}})};
   if (raisedFirst) std::swap(poses[0], poses[1]);
-  Sequence collection;
-  collection.beta = Eigen::VectorXd::Zero(builtinBodyModel().numShapeComponents());
-  collection.beta[0] = 0.8;
-  for (const BodyPose& p : poses)
-  {
-    collection.poses.push_back(p);
-    collection.captures.push_back(builtinBodyModel().posed(collection.beta, p));
-  }
-  return collection;
+  return unclothedPoses(poses);
 }
 
 /// The body fitted to every frame of `collection` as key frames.
@@ -546,6 +552,52 @@ TEST(BodyFit, StartsTheLimbsOfACollectionsFirstFrameAgain)
               100 * leftAnkle, 100 * rightAnkle);
   EXPECT_LT(leftAnkle, 0.08);
   EXPECT_LT(rightAnkle, 0.08);
+}
+
+TEST(BodyFit, TurnsAnUnrelatedPoseThatSettledFacingBackwards)
+{
+  // Two poses of a random collection: crouching on bent knees, then standing with both arms
+  // raised, turned 113 degrees further. Fitted from the crouch, the second frame's body settled
+  // facing backwards (170 degrees off, its knees straight), close enough to the frame to pass
+  // for ok. Fitted from every heading as well, it faces the way the person does.
+  const std::vector<BodyPose> poses = {unrelatedPose(1.57, {-0.16, 0.0, -0.24},
+                                                     {{Spine1, {0.10, 0.02, 0.15}},
+                                                      {Spine2, {0.04, 0.05, 0.0}},
+                                                      {Neck, {0.18, -0.14, 0.0}},
+                                                      {LeftShoulder, {0.41, 0.23, 0.18}},
+                                                      {LeftElbow, {-1.37, 0, 0}},
+                                                      {RightShoulder, {-0.12, 0.28, -0.65}},
+                                                      {RightElbow, {-2.14, 0, 0}},
+                                                      {LeftHip, {-0.78, -0.16, -0.47}},
+                                                      {LeftKnee, {1.17, 0, 0}},
+                                                      {LeftAnkle, {-0.07, 0, 0}},
+                                                      {RightHip, {-0.86, 0.28, 0.41}},
+                                                      {RightKnee, {1.38, 0, 0}},
+                                                      {RightAnkle, {0.06, 0, 0}}}),
+                                       unrelatedPose(-0.39, {-0.01, 0.0, -0.36},
+                                                     {{Spine1, {0.05, -0.26, -0.06}},
+                                                      {Spine2, {0.28, 0.04, 0.0}},
+                                                      {Neck, {-0.06, -0.23, 0.0}},
+                                                      {LeftShoulder, {-0.17, 0.42, 1.06}},
+                                                      {LeftElbow, {-1.87, 0, 0}},
+                                                      {RightShoulder, {-0.33, -0.50, 1.26}},
+                                                      {RightElbow, {-0.82, 0, 0}},
+                                                      {LeftHip, {0.27, -0.30, 0.03}},
+                                                      {LeftKnee, {0.24, 0, 0}},
+                                                      {LeftAnkle, {-0.30, 0, 0}},
+                                                      {RightKnee, {0.09, 0, 0}},
+                                                      {RightAnkle, {-0.26, 0, 0}}})};
+  const Sequence collection = unclothedPoses(poses);
+  const BodyFitResult fit = fitUnrelatedPoses(collection);
+  ASSERT_FALSE(fit.frames[1].continuesPrevious);
+  const double turn =
+      bodyfit::headingChange(fit.frames[1].pose, collection.poses[1], Vec3::UnitY());
+  double joints, surface;
+  fitErrors(fit, collection, Eigen::Matrix3d::Identity(), joints, surface, nullptr, 1);
+  std::printf("[ measured ] an unrelated pose: facing %.1f degrees off, joint error %.2f cm\n",
+              turn * 180.0 / M_PI, 100 * joints);
+  EXPECT_LT(turn, M_PI / 6);
+  EXPECT_LT(joints, 0.05);
 }
 
 TEST(BodyFit, GrowsToFillADeeperTorso)

@@ -211,7 +211,8 @@ void firstPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
           continuous ? predictedPose(fitter, options, *before.mesh, *s.mesh, fits[last].pose)
                      : fits[last].pose;
       surfaces.release(last);
-      fitter.fitFrame(s, init, continuous ? &init : nullptr, options.stages, fit, continuous);
+      fitter.fitFrame(s, init, continuous ? &init : nullptr, options.stages, fit, continuous,
+                      /*everyHeading=*/true);
       if (!continuous)
       {
         fitter.refitFromPoses(s, okPoses(usable, i, fits), fit);
@@ -386,7 +387,7 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
     BodyFrameFit& fit = fits[i];
     const BodyPose init = fit.pose;
     fitter.fitFrame(surfaces.get(i), init, fit.continuesPrevious ? previous : nullptr, finalStages,
-                    fit, fit.continuesPrevious);
+                    fit, fit.continuesPrevious, /*everyHeading=*/true);
     if (previous && fit.continuesPrevious)
       fitter.refitFromNeighbour(surfaces.get(i), *previous, finalStages, fit,
                                 /*coverAsMuch=*/false);

@@ -436,15 +436,20 @@ public:
   /// One frame: from `init`, full schedule, the root moved by turns; a poor result is retried
   /// from every heading, and a retry is kept only when it explains the frame better by
   /// twoSidedScore. A frame that does not continue the one `init` comes from (`continuous`
-  /// false: see BodyFitOptions::neighbourGap) may then face any way.
+  /// false: see BodyFitOptions::neighbourGap) may then face any way; with `everyHeading` it is
+  /// retried from every heading even when its fit is ok. A body started from an unrelated
+  /// pose can settle facing backwards, its limbs bent against their range into the frame's,
+  /// and still lie close enough to the frame to pass for ok (5 of a random collection's 20
+  /// frames).
   void fitFrame(const FrameSurface& frame, const BodyPose& init, const BodyPose* previous,
-                const std::vector<BodyFitStage>& stages, BodyFrameFit& fit, bool continuous = true)
+                const std::vector<BodyFitStage>& stages, BodyFrameFit& fit, bool continuous = true,
+                bool everyHeading = false)
   {
     fit.pose = init;
     fit.energy = fitPose(frame, fit.pose, previous, stages, options_.extremityGate,
                          &fit.extremitiesMatched, /*rigid=*/false, /*byTurns=*/true);
     measure(frame, fit);
-    if (fit.status == BodyFitStatus::Ok) return;
+    if (fit.status == BodyFitStatus::Ok && (continuous || !everyHeading)) return;
     const auto retries = initialFits(frame);
     const RankedFit* retry = nullptr;
     if (!continuous)
