@@ -90,6 +90,10 @@ int ctModelChoice::RequestData(vtkInformation*, vtkInformationVector** inputVect
     criterion->SetName("Criterion");
     criterion->InsertNextValue(clothtrack::modelChoiceCriterion(this->Margin));
     output->GetFieldData()->AddArray(criterion);
+    vtkNew<vtkStringArray> templateCriterion;
+    templateCriterion->SetName("TemplateChoiceCriterion");
+    templateCriterion->InsertNextValue(clothtrack::templateChoiceCriterion(this->Margin));
+    output->GetFieldData()->AddArray(templateCriterion);
   }
   catch (const clothtrack::Error& e)
   {

@@ -12,8 +12,9 @@
  *
  * Output: a vtkTable with one row per alignment: Alignment (its connection index), MeanStretch,
  * MeanSurfaceDistance (metres, means over the frames that have one) and Kept (1 for the kept
- * alignment, else 0); and the field arrays KeptAlignment (the kept connection index) and
- * Criterion (the rule in words).
+ * alignment, else 0); and the field arrays KeptAlignment (the kept connection index),
+ * Criterion (the rule in words) and TemplateChoiceCriterion (the same rule in words for
+ * alignments under several template frames, the first the one chosen by pose).
  */
 #ifndef ctModelChoice_h
 #define ctModelChoice_h

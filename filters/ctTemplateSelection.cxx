@@ -66,6 +66,14 @@ void addCriteriaRows(vtkTable* table, const clothtrack::TemplateSelection& selec
 {
   const auto& frames = selection.frames;
   const int n = static_cast<int>(frames.size());
+  // Where each frame comes in the order the rest-pose criterion would choose them (-1: not a
+  // candidate, or the choice was not made by pose).
+  std::vector<int> poseOrder(n, -1);
+  if (selection.decidedBy == clothtrack::TemplateCriterion::RestPose)
+  {
+    const std::vector<int> byPose = clothtrack::templateFramesByPose(selection, restPose);
+    for (size_t i = 0; i < byPose.size(); ++i) poseOrder[byPose[i]] = static_cast<int>(i);
+  }
   auto column = [&](const char* name, auto&& value, auto* array)
   {
     array->SetName(name);
@@ -98,6 +106,8 @@ void addCriteriaRows(vtkTable* table, const clothtrack::TemplateSelection& selec
       "Candidate", [&](int k) { return static_cast<int>(selection.candidate[k]); },
       vtkNew<vtkIntArray>().GetPointer());
   column(
+      "PoseOrder", [&](int k) { return poseOrder[k]; }, vtkNew<vtkIntArray>().GetPointer());
+  column(
       "Chosen", [&](int k) { return k == chosenFrame ? 1 : 0; },
       vtkNew<vtkIntArray>().GetPointer());
 }
@@ -125,10 +135,13 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
       pointers[k] = &frames[k];
     }
     std::vector<double> restPose;
+    std::vector<bool> continuesPrevious;
     if (auto* body = vtkMultiBlockDataSet::GetData(inputVector[1], 0))
     {
       checkOneBlockPerFrame(sequence, body, "template selection", "body fit");
       restPose = blockFieldValues(body, clothtrack::arrays::RestPoseDistance, NAN);
+      for (double c : blockFieldValues(body, "ContinuesPrevious", 1.0))
+        continuesPrevious.push_back(c != 0.0);
     }
     const TemplateSelection selection = chooseTemplateFrame(pointers, this->Options, restPose);
     this->ChosenFrame = this->TemplateFrame >= 0 ? this->TemplateFrame : selection.chosen;
@@ -142,6 +155,8 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
     decidedBy->InsertNextValue(
         this->TemplateFrame >= 0 ? "given" : templateCriterionName(selection.decidedBy));
     output->GetFieldData()->AddArray(decidedBy);
+    clothtrack::addFieldValue(output->GetFieldData(), "CollectionOfPoses",
+                              static_cast<int>(isCollectionOfPoses(continuesPrevious)));
     addCriteriaRows(vtkTable::GetData(outputVector, 1), selection, restPose, this->ChosenFrame);
   }
   catch (const Error& e)

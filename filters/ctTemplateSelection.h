@@ -13,11 +13,15 @@
  * the paper's, or no body fit) the candidate with the smallest area ratio. TemplateFrame >= 0
  * overrides the choice.
  *
- * Input port 1 (optional): one block per frame with field data RestPoseDistance, as output
- * port 0 or 1 of ctBodyFit.
+ * Input port 1 (optional): one block per frame with field data RestPoseDistance (and
+ * ContinuesPrevious), as output port 0 or 1 of ctBodyFit.
  *
- * Output port 0: the template mesh (field data TemplateFrame). Output port 1: a vtkTable with
- * every frame's criteria (RestPoseDistance NaN where unknown) and the choice.
+ * Output port 0: the template mesh (field data TemplateFrame, TemplateCriterion, and
+ * CollectionOfPoses: 1 when at least half of the frames after the first do not continue their
+ * predecessor, clothtrack::isCollectionOfPoses). Output port 1: a vtkTable with every frame's
+ * criteria (RestPoseDistance NaN where unknown), PoseOrder (the order in which the rest-pose
+ * criterion would choose the frames, clothtrack::templateFramesByPose; -1 for the others or
+ * when it did not decide) and the choice.
  */
 #ifndef ctTemplateSelection_h
 #define ctTemplateSelection_h

@@ -10,7 +10,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -63,14 +62,6 @@ std::string candidateWork(const AlignSettings& s, int frame)
   fs::copy_file(first / "landmarks.jsonl", work / "landmarks.jsonl",
                 fs::copy_options::overwrite_existing);
   return work.string();
-}
-
-std::string templateChoiceCriterion()
-{
-  return "the template frame chosen by pose, unless the alignment under a further one is both "
-         "less stretched and closer to the frames, each by more than " +
-         std::to_string(static_cast<int>(std::lround(100 * kModelChoiceMargin))) +
-         " %: then the one whose smaller gain of the two is the largest";
 }
 
 nlohmann::json choiceSummary(const AlignSettings& s, const std::vector<nlohmann::json>& metrics,

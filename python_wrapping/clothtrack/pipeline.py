@@ -30,11 +30,16 @@ class Alignment:
                     the app); always per_frame_confidence, per_frame_coverage_distance_m,
                     per_frame_fit_attempts, per_frame_body_distance_m and per_frame_extent_gap_m
                     (None where the frame's body is not trusted) and doubtful_frames (frames with
-                    a confidence below 1; the fit stage warns about each), seconds_total; with
-                    several body models also model and model_choice, as in metrics.json
+                    a confidence below 1; the fit stage warns about each), seconds_total,
+                    template_frames_by_pose (when the rest pose chose the template); with several
+                    body models also model and model_choice, with several template frames
+                    template_choice and template_criterion, as in metrics.json
     model           the body model it was made under: "builtin" or the model file as named
     model_alignments  every model's Alignment, in the order the models were named (this one among
                     them); [self] under one model
+    template_alignments  every template candidate's Alignment (this one among them), the frame
+                    chosen first; [self] under one template frame
+    body_fit        the ctBodyFit the alignment was made with (updated)
     summary         the template fit's per-frame vtkTable (ctTemplateFit output port 1)
     """
 
@@ -46,6 +51,8 @@ class Alignment:
         self.errors = errors
         self.model = _BUILTIN_MODEL
         self.model_alignments = [self]
+        self.template_alignments = [self]
+        self.body_fit = None
         self.summary = fit_summary
         distances = [numpy_support.vtk_to_numpy(a.GetPointData().GetArray("SurfaceDistance")) for a in aligned]
         self.metrics = {
@@ -111,7 +118,12 @@ _STAGE_KEYWORDS = {
             "maximum_nearest_distance", "coverage_weight", "start_from_body",
             "stretch_start_to_frame", "correspondence_gate", "landmark_consensus"),
     "error": ("maximum_truth_distance",),
+    "selection": ("minimum_shell_area", "persistence"),
 }
+
+# Template frames tried on a collection of unrelated poses by default, as `clothtrack align
+# --template-candidates 0` tries (kCollectionTemplateCandidates).
+_COLLECTION_TEMPLATE_CANDIDATES = 3
 
 
 def _property_name(keyword):
@@ -143,7 +155,7 @@ def _models_of(model):
 
 def align(frames, ground_truth=None, template_frame=None, solver="exact", predict_radius=0.3,
           shape_frames=8, frame_rate=25.0, progress=None, template_criterion="rest-pose",
-          threads=0, model=None, **options):
+          threads=0, model=None, template_candidates=0, **options):
     """Aligns a captured sequence: body fit and landmarks, template choice, geodesic-patch
     correspondences, template fit and, with a ground truth, the vertex errors.
 
@@ -168,6 +180,15 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
                     hold "model" and "model_choice" as the app's metrics.json does, and
                     model_alignments holds every model's Alignment. Stage names in progress
                     calls and errors then start with the model, e.g. "mh.vtp: body fit".
+    template_candidates  template frames to align under when template_frame is None: the one
+                    chosen, then the next ones by pose (the fitted body nearest the rest pose),
+                    one alignment kept by the same figures as among body models (no ground
+                    truth), as `clothtrack align --template-candidates N` does. 0 (default): 3 on
+                    a collection of unrelated poses (at least half of the frames do not continue
+                    their predecessor), 1 on a sequence. With more than one the result's metrics
+                    hold "template_choice" as metrics.json does, template_alignments every
+                    candidate's Alignment, and stage names start with "template frame K: " for
+                    the candidates after the first.
     options         further parameters by their snake_case names (docs/parameters.md), e.g.
                     epsilon=0.2, minimum_radius=0.05, minimum_shell_area=0.05, persistence=2,
                     solver_tolerance=1e-5, maximum_truth_distance=0.05, start_from_body=False
@@ -187,6 +208,8 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
                                                                           ", ".join(sorted(known))))
     if threads < 0:
         raise ValueError("threads must be 0 (every core) or more")
+    if template_candidates < 0:
+        raise ValueError("template_candidates must be 0 (automatic) or more")
     models = _models_of(model)
     sequence = _as_sequence(frames, frame_rate)
     if template_frame is not None and not 0 <= template_frame < sequence.GetNumberOfBlocks():
@@ -200,30 +223,81 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
                              % (truth.GetNumberOfBlocks(), sequence.GetNumberOfBlocks()))
     settings = dict(template_frame=template_frame, solver=solver, predict_radius=predict_radius,
                     shape_frames=shape_frames, progress=progress,
-                    template_criterion=template_criterion, threads=threads, options=options)
-    alignments = [_align_under(sequence, truth, label, settings, "%s: " % label if len(models) > 1 else "")
+                    template_criterion=template_criterion, threads=threads, options=options,
+                    template_candidates=template_candidates)
+    alignments = [_align_choosing_template(sequence, truth, label, settings,
+                                           "%s: " % label if len(models) > 1 else "")
                   for label in models]
     if len(alignments) == 1:
         return alignments[0]
-    return _choose(alignments)
+    return _choose_model(alignments)
 
 
-def _align_under(sequence, truth, model, settings, prefix):
+def _align_choosing_template(sequence, truth, model, settings, prefix):
+    """The alignment under the template frame chosen and, on a collection of poses, under the
+    next ones by pose (the first alignment's body fit reused), one kept as the app keeps it."""
+    first = _align_under(sequence, truth, model, settings, prefix)
+    if settings["template_frame"] is not None or settings["template_candidates"] == 1:
+        return first
+    by_pose, collection = _frames_by_pose(sequence, first.body_fit, settings)
+    if by_pose:
+        first.metrics["template_frames_by_pose"] = by_pose
+    count = settings["template_candidates"] or (_COLLECTION_TEMPLATE_CANDIDATES if collection else 1)
+    further = [k for k in by_pose if k != first.template_frame][:count - 1]
+    if not further:
+        return first
+    candidates = [first]
+    for k in further:
+        one = dict(settings, template_frame=k)
+        candidates.append(_align_under(sequence, truth, model, one, "%stemplate frame %d: " % (prefix, k),
+                                       body=first.body_fit))
+    return _choose_template(candidates, by_pose)
+
+
+def _frames_by_pose(sequence, body, settings):
+    """The frames the rest-pose criterion would choose in turn (empty when it did not decide),
+    and whether the frames are a collection of unrelated poses, from ctTemplateSelection."""
+    import clothtrack
+
+    selection = clothtrack.ctTemplateSelection()
+    selection.SetInputData(0, sequence)
+    selection.SetInputConnection(1, body.GetOutputPort(1))
+    selection.SetTemplateCriterion(1 if settings["template_criterion"] == "rest-pose" else 0)
+    selection.SetNumberOfThreads(settings["threads"])
+    _set_stage_keywords("selection", selection, settings["options"])
+    catcher = _ErrorCatcher(selection)
+    selection.Update()
+    if catcher.message:
+        raise RuntimeError("template selection: %s" % catcher.message)
+    table = selection.GetCriteriaOutput()
+    order = {}
+    for row in range(table.GetNumberOfRows()):
+        place = table.GetValueByName(row, "PoseOrder").ToInt()
+        if place >= 0:
+            order[place] = table.GetValueByName(row, "Frame").ToInt()
+    collection = selection.GetOutput().GetFieldData().GetArray("CollectionOfPoses").GetTuple1(0) != 0
+    return [order[place] for place in sorted(order)], collection
+
+
+def _align_under(sequence, truth, model, settings, prefix, body=None):
     """One alignment of `sequence` under body model `model` (a label of _models_of); `prefix`
-    starts its stage names."""
+    starts its stage names. `body`, an updated ctBodyFit of the same sequence and model, is
+    reused rather than fitted again."""
     import clothtrack
 
     options = settings["options"]
-    body = clothtrack.ctBodyFit()
-    body.SetInputData(sequence)
-    body.SetShapeFrames(min(settings["shape_frames"], sequence.GetNumberOfBlocks()))
     stages = {}
-    if model != _BUILTIN_MODEL:
-        reader = clothtrack.ctBodyModelReader()
-        reader.SetFileName(model)
-        body.SetBodyModelConnection(reader.GetOutputPort())
-        stages["body model"] = reader
-    _set_stage_keywords("body", body, options)
+    if body is None:
+        body = clothtrack.ctBodyFit()
+        body.SetInputData(sequence)
+        body.SetShapeFrames(min(settings["shape_frames"], sequence.GetNumberOfBlocks()))
+        if model != _BUILTIN_MODEL:
+            reader = clothtrack.ctBodyModelReader()
+            reader.SetFileName(model)
+            body.SetBodyModelConnection(reader.GetOutputPort())
+            stages["body model"] = reader
+        _set_stage_keywords("body", body, options)
+        stages["body fit"] = body
     correspondence = clothtrack.ctPatchCorrespondence()
     correspondence.SetInputData(0, sequence)
     correspondence.SetInputConnection(1, body.GetOutputPort(1))
@@ -248,7 +322,7 @@ def _align_under(sequence, truth, model, settings, prefix):
         last.SetInputData(1, truth)
         _set_stage_keywords("error", last, options)
 
-    stages.update({"body fit": body, "correspondence": correspondence, "template fit": fit})
+    stages.update({"correspondence": correspondence, "template fit": fit})
     if last is not fit:
         stages["alignment error"] = last
     stages = {prefix + name: algorithm for name, algorithm in stages.items()}
@@ -273,12 +347,14 @@ def _align_under(sequence, truth, model, settings, prefix):
         errors = np.stack([numpy_support.vtk_to_numpy(a.GetPointData().GetArray("Error")) for a in aligned])
         result = Alignment(aligned, correspondence.GetChosenFrame(), errors, last.GetFrameErrorOutput(), summary)
     result.model = model
+    result.body_fit = body
     result.metrics["seconds_total"] = seconds
     return result
 
 
-def _choose(alignments):
-    """The alignment ctModelChoice keeps, with the choice in its metrics as in metrics.json."""
+def _preferred(alignments, label):
+    """The index ctModelChoice keeps among `alignments`, its criterion, and each alignment's
+    entry (its figures, doubtful frames, cost and, with a ground truth, its errors)."""
     import clothtrack
 
     choice = clothtrack.ctModelChoice()
@@ -287,23 +363,47 @@ def _choose(alignments):
     catcher = _ErrorCatcher(choice)
     choice.Update()
     if catcher.message:
-        raise RuntimeError("model choice: %s" % catcher.message)
+        raise RuntimeError("%s: %s" % (label, catcher.message))
     table = choice.GetOutput()
-    kept = choice.GetKeptAlignment()
-    models = []
+    entries = []
     for i, alignment in enumerate(alignments):
-        entry = {"model": alignment.model,
-                 "mean_stretch": table.GetValueByName(i, "MeanStretch").ToDouble(),
+        entry = {"mean_stretch": table.GetValueByName(i, "MeanStretch").ToDouble(),
                  "mean_surface_distance_m": table.GetValueByName(i, "MeanSurfaceDistance").ToDouble(),
                  "doubtful_frames": len(alignment.metrics.get("doubtful_frames", []))}
         for key in ("seconds_total", "mean_vertex_error_m", "within_10cm"):
             if key in alignment.metrics:
                 entry[key] = alignment.metrics[key]
-        models.append(entry)
+        entries.append(entry)
+    fields = table.GetFieldData()
+    criteria = {name: fields.GetAbstractArray(name).GetValue(0) for name in ("Criterion", "TemplateChoiceCriterion")}
+    return choice.GetKeptAlignment(), criteria, entries
+
+
+def _choose_model(alignments):
+    """The alignment kept among the body models', with the choice in its metrics as in
+    metrics.json."""
+    kept, criteria, entries = _preferred(alignments, "model choice")
+    for alignment, entry in zip(alignments, entries):
+        entry["model"] = alignment.model
     result = alignments[kept]
     result.metrics["model"] = result.model
-    result.metrics["model_choice"] = {
-        "criterion": table.GetFieldData().GetAbstractArray("Criterion").GetValue(0),
-        "kept": kept, "models": models}
+    result.metrics["model_choice"] = {"criterion": criteria["Criterion"], "kept": kept, "models": entries}
     result.model_alignments = alignments
+    return result
+
+
+def _choose_template(alignments, by_pose):
+    """The alignment kept among the template candidates', with the choice in its metrics as in
+    metrics.json (the cost is every candidate's: the later ones reuse the first's body fit)."""
+    kept, criteria, entries = _preferred(alignments, "template choice")
+    for alignment, entry in zip(alignments, entries):
+        entry["template_frame"] = alignment.template_frame
+    result = alignments[kept]
+    result.metrics["template_choice"] = {
+        "criterion": criteria["TemplateChoiceCriterion"], "kept": kept,
+        "kept_template_frame": result.template_frame, "candidates": entries}
+    result.metrics["template_criterion"] = "alignment-figures"
+    result.metrics["template_frames_by_pose"] = by_pose
+    result.metrics["seconds_total"] = sum(a.metrics["seconds_total"] for a in alignments)
+    result.template_alignments = alignments
     return result

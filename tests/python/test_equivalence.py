@@ -3,7 +3,8 @@
 ParaView plugin's chain in pvpython must choose the same template frame and give the same aligned
 positions (to 1e-9 m; each path uses every core, and results do not depend on the thread count).
 Under two body models, the command line, clothtrack.align and the plugin's chains (Model Choice)
-must also keep the same one, by the same figures.
+must also keep the same one, by the same figures; under two template frames, the command line and
+clothtrack.align must too.
 """
 import glob
 import os
@@ -65,7 +66,9 @@ class Equivalence(unittest.TestCase):
                    for i, m in enumerate(cls.metrics["model_choice"]["models"])]
         cls.model_positions = [read_positions(os.path.join(f, "aligned", "aligned_*.vtp")) for f in folders]
         with open(os.path.join(folders[0], "metrics.json")) as f:
-            cls.template_frame = json.load(f)["template_frame"]
+            builtin_metrics = json.load(f)
+        cls.template_frame = builtin_metrics["template_frame"]
+        cls.frames_by_pose = builtin_metrics["template_frames_by_pose"]
         cls.positions = cls.model_positions[0]  # the built-in model's, as the other paths use it
         assert cls.positions.shape[0] == 4
 
@@ -106,12 +109,49 @@ class Equivalence(unittest.TestCase):
                 self.assertAlmostEqual(mine[key], cli[key], delta=1e-12, msg=key)
         builtin = result.model_alignments[0]
         self.assertEqual(builtin.model, "builtin")
+        # A sequence is aligned under one template frame; the frames by pose are reported.
+        self.assertNotIn("template_choice", builtin.metrics)
+        self.assertEqual(builtin.metrics["template_frames_by_pose"], self.frames_by_pose)
         self.assertSameAlignment(builtin.template_frame, builtin.positions.astype(np.float64), "clothtrack.align")
         other = result.model_alignments[1].positions.astype(np.float64)
         difference = np.abs(other - self.model_positions[1]).max()
         self.assertLessEqual(difference, TOLERANCE, "clothtrack.align under %s differs by %.3g m" % (self.model, difference))
         # The two models give two alignments: the comparison above is not of one alignment twice.
         self.assertGreater(np.abs(other - builtin.positions).max(), 1e-4)
+
+    def test_python_template_choice(self):
+        import json
+        import clothtrack
+        out = os.path.join(self.work, "cli_templates")
+        subprocess.run([APP, "align", self.frames, "-o", out, "--no-report", "--template-candidates", "2"],
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        with open(os.path.join(out, "metrics.json")) as f:
+            cli = json.load(f)
+        stages = set()
+        result = clothtrack.align(self.frames, template_candidates=2,
+                                  progress=lambda stage, _fraction: stages.add(stage))
+        choice = result.metrics["template_choice"]
+        self.assertEqual(choice["criterion"], cli["template_choice"]["criterion"])
+        self.assertEqual(choice["kept"], cli["template_choice"]["kept"])
+        self.assertEqual(result.template_frame, cli["template_frame"])
+        self.assertEqual(result.metrics["template_frames_by_pose"], cli["template_frames_by_pose"])
+        self.assertEqual(len(choice["candidates"]), 2)
+        for mine, theirs in zip(choice["candidates"], cli["template_choice"]["candidates"]):
+            self.assertEqual(mine["template_frame"], theirs["template_frame"])
+            for key in ("mean_stretch", "mean_surface_distance_m"):
+                self.assertAlmostEqual(mine[key], theirs[key], delta=1e-12, msg=key)
+        # The second candidate reuses the first's body fit: its stages are named, the body fit not.
+        second = choice["candidates"][1]["template_frame"]
+        self.assertIn("template frame %d: template fit" % second, stages)
+        self.assertNotIn("template frame %d: body fit" % second, stages)
+        self.assertIs(result, result.template_alignments[choice["kept"]])
+        positions = read_positions(os.path.join(out, "aligned", "aligned_*.vtp"))
+        difference = np.abs(result.positions.astype(np.float64) - positions).max()
+        self.assertLessEqual(difference, TOLERANCE, "clothtrack.align differs by %.3g m" % difference)
+        # The two candidates are two alignments, each under its own template.
+        a, b = result.template_alignments
+        self.assertNotEqual(a.template_frame, b.template_frame)
+        self.assertNotEqual(a.positions.shape, b.positions.shape)
 
     def test_plugin_chain(self):
         if not (PVPYTHON and PLUGIN):

@@ -180,11 +180,27 @@ TEST(TemplateSelectionFilter, RestPoseFromTheBodyFitDecidesAmongCandidates)
   vtkTable* table = selection->GetCriteriaOutput();
   EXPECT_DOUBLE_EQ(table->GetValueByName(1, "RestPoseDistance").ToDouble(), 0.9);
   EXPECT_TRUE(std::isnan(table->GetValueByName(3, "RestPoseDistance").ToDouble()));
+  // The order the pose would choose the frames in; frame 3 has no trusted pose.
+  auto poseOrder = [&](int k) { return table->GetValueByName(k, "PoseOrder").ToInt(); };
+  EXPECT_EQ(poseOrder(2), 0);
+  EXPECT_EQ(poseOrder(1), 1);
+  EXPECT_EQ(poseOrder(0), 2);
+  EXPECT_EQ(poseOrder(3), -1);
+  auto collection = [&]
+  { return selection->GetOutput()->GetFieldData()->GetArray("CollectionOfPoses")->GetTuple1(0); };
+  EXPECT_EQ(collection(), 0.0) << "bodies without ContinuesPrevious continue their predecessor";
+  for (unsigned k = 1; k < 3; ++k)
+    addFieldValue(vtkPolyData::SafeDownCast(bodies->GetBlock(k))->GetFieldData(),
+                  "ContinuesPrevious", 0);
+  bodies->Modified();
+  selection->Update();
+  EXPECT_EQ(collection(), 1.0) << "two of the three frames after the first are unrelated";
 
-  // The paper's criterion ignores the poses.
+  // The paper's criterion ignores the poses, and gives no order by pose.
   selection->SetTemplateCriterion(0);
   selection->Update();
   EXPECT_EQ(selection->GetChosenFrame(), byArea);
+  EXPECT_EQ(selection->GetCriteriaOutput()->GetValueByName(2, "PoseOrder").ToInt(), -1);
 
   // A body fit of another length is an error.
   bodies->SetNumberOfBlocks(3);

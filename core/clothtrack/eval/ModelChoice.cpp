@@ -47,4 +47,12 @@ std::string modelChoiceCriterion(double margin)
          "frames than its alignment, each by more than " +
          percent + " %: then the one whose smaller gain of the two is the largest";
 }
+
+std::string templateChoiceCriterion(double margin)
+{
+  const std::string percent = std::to_string(static_cast<int>(std::lround(100 * margin)));
+  return "the template frame chosen by pose, unless the alignment under a further one is both "
+         "less stretched and closer to the frames, each by more than " +
+         percent + " %: then the one whose smaller gain of the two is the largest";
+}
 } // namespace clothtrack

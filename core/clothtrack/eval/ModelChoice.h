@@ -41,4 +41,8 @@ int preferredAlignment(const std::vector<AlignmentFigures>& figures,
 
 /// preferredAlignment's rule in words, as metrics.json and the report give it.
 std::string modelChoiceCriterion(double margin = kModelChoiceMargin);
+
+/// The same rule in words for alignments under several template frames, the first the one
+/// chosen by pose (metrics.json's template_choice).
+std::string templateChoiceCriterion(double margin = kModelChoiceMargin);
 } // namespace clothtrack
