@@ -157,6 +157,8 @@ int ctTemplateSelection::RequestData(vtkInformation*, vtkInformationVector** inp
     output->GetFieldData()->AddArray(decidedBy);
     clothtrack::addFieldValue(output->GetFieldData(), "CollectionOfPoses",
                               static_cast<int>(isCollectionOfPoses(continuesPrevious)));
+    clothtrack::addFieldValue(output->GetFieldData(), "DefaultTemplateCandidates",
+                              defaultTemplateCandidates(continuesPrevious));
     addCriteriaRows(vtkTable::GetData(outputVector, 1), selection, restPose, this->ChosenFrame);
   }
   catch (const Error& e)

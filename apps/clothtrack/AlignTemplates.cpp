@@ -36,7 +36,7 @@ std::vector<int> furtherTemplates(const AlignSettings& settings, const fs::path&
     if (body.is_object())
       for (const nlohmann::json& frame : body.value("per_frame", nlohmann::json::array()))
         continues.push_back(frame.value("continues_previous", true));
-    count = isCollectionOfPoses(continues) ? kCollectionTemplateCandidates : 1;
+    count = defaultTemplateCandidates(continues);
   }
   std::vector<int> further;
   const int chosen = metrics.value("template_frame", -1);

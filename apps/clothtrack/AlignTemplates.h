@@ -15,9 +15,6 @@
 
 namespace clothtrack::app
 {
-/// Candidates aligned on a collection of poses when settings.templateCandidates is 0.
-inline constexpr int kCollectionTemplateCandidates = 3;
-
 /// Runs alignOnce, then, on a collection of poses (or with settings.templateCandidates above 1),
 /// under the further template candidates, and keeps one; returns the exit code. A given
 /// template, a partial run (correspond, fit) or several processes run alignOnce alone.

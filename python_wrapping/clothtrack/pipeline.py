@@ -121,11 +121,6 @@ _STAGE_KEYWORDS = {
     "selection": ("minimum_shell_area", "persistence"),
 }
 
-# Template frames tried on a collection of unrelated poses by default, as `clothtrack align
-# --template-candidates 0` tries (kCollectionTemplateCandidates).
-_COLLECTION_TEMPLATE_CANDIDATES = 3
-
-
 def _property_name(keyword):
     return "".join(word.capitalize() for word in keyword.split("_"))
 
@@ -239,10 +234,10 @@ def _align_choosing_template(sequence, truth, model, settings, prefix):
     first = _align_under(sequence, truth, model, settings, prefix)
     if settings["template_frame"] is not None or settings["template_candidates"] == 1:
         return first
-    by_pose, collection = _frames_by_pose(sequence, first.body_fit, settings)
+    by_pose, default_count = _frames_by_pose(sequence, first.body_fit, settings)
     if by_pose:
         first.metrics["template_frames_by_pose"] = by_pose
-    count = settings["template_candidates"] or (_COLLECTION_TEMPLATE_CANDIDATES if collection else 1)
+    count = settings["template_candidates"] or default_count
     further = [k for k in by_pose if k != first.template_frame][:count - 1]
     if not further:
         return first
@@ -256,7 +251,8 @@ def _align_choosing_template(sequence, truth, model, settings, prefix):
 
 def _frames_by_pose(sequence, body, settings):
     """The frames the rest-pose criterion would choose in turn (empty when it did not decide),
-    and whether the frames are a collection of unrelated poses, from ctTemplateSelection."""
+    and how many template frames to try when none is asked for (3 on a collection of unrelated
+    poses, 1 on a sequence), from ctTemplateSelection."""
     import clothtrack
 
     selection = clothtrack.ctTemplateSelection()
@@ -275,8 +271,9 @@ def _frames_by_pose(sequence, body, settings):
         place = table.GetValueByName(row, "PoseOrder").ToInt()
         if place >= 0:
             order[place] = table.GetValueByName(row, "Frame").ToInt()
-    collection = selection.GetOutput().GetFieldData().GetArray("CollectionOfPoses").GetTuple1(0) != 0
-    return [order[place] for place in sorted(order)], collection
+    fields = selection.GetOutput().GetFieldData()
+    default_count = int(fields.GetArray("DefaultTemplateCandidates").GetTuple1(0))
+    return [order[place] for place in sorted(order)], default_count
 
 
 def _align_under(sequence, truth, model, settings, prefix, body=None):

@@ -95,6 +95,8 @@ TEST(TemplateSelection, ACollectionOfPosesMostlyBreaksWithItsPredecessor)
   EXPECT_TRUE(isCollectionOfPoses({true, false, false, false}));
   EXPECT_FALSE(isCollectionOfPoses({false}));
   EXPECT_FALSE(isCollectionOfPoses({}));
+  EXPECT_EQ(defaultTemplateCandidates({true, false, false, false}), 3);
+  EXPECT_EQ(defaultTemplateCandidates({true, true, true, false, true}), 1);
 }
 
 TEST(TemplateSelection, RestPoseOnlyFromBodiesThatExplainTheirFrame)

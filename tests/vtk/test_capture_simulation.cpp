@@ -188,13 +188,22 @@ TEST(TemplateSelectionFilter, RestPoseFromTheBodyFitDecidesAmongCandidates)
   EXPECT_EQ(poseOrder(3), -1);
   auto collection = [&]
   { return selection->GetOutput()->GetFieldData()->GetArray("CollectionOfPoses")->GetTuple1(0); };
+  auto defaultCandidates = [&]
+  {
+    return selection->GetOutput()
+        ->GetFieldData()
+        ->GetArray("DefaultTemplateCandidates")
+        ->GetTuple1(0);
+  };
   EXPECT_EQ(collection(), 0.0) << "bodies without ContinuesPrevious continue their predecessor";
+  EXPECT_EQ(defaultCandidates(), 1.0);
   for (unsigned k = 1; k < 3; ++k)
     addFieldValue(vtkPolyData::SafeDownCast(bodies->GetBlock(k))->GetFieldData(),
                   "ContinuesPrevious", 0);
   bodies->Modified();
   selection->Update();
   EXPECT_EQ(collection(), 1.0) << "two of the three frames after the first are unrelated";
+  EXPECT_EQ(defaultCandidates(), 3.0);
 
   // The paper's criterion ignores the poses, and gives no order by pose.
   selection->SetTemplateCriterion(0);

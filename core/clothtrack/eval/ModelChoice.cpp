@@ -40,19 +40,28 @@ int preferredAlignment(const std::vector<AlignmentFigures>& figures, double marg
   return kept;
 }
 
-std::string modelChoiceCriterion(double margin)
+namespace
+{
+/// The rule both choices share, after the words naming the alternatives.
+std::string marginRule(double margin)
 {
   const std::string percent = std::to_string(static_cast<int>(std::lround(100 * margin)));
+  return "each by more than " + percent +
+         " %: then the one whose smaller gain of the two is the largest";
+}
+} // namespace
+
+std::string modelChoiceCriterion(double margin)
+{
   return "the first model, unless others' alignments are both less stretched and closer to the "
-         "frames than its alignment, each by more than " +
-         percent + " %: then the one whose smaller gain of the two is the largest";
+         "frames than its alignment, " +
+         marginRule(margin);
 }
 
 std::string templateChoiceCriterion(double margin)
 {
-  const std::string percent = std::to_string(static_cast<int>(std::lround(100 * margin)));
   return "the template frame chosen by pose, unless the alignment under a further one is both "
-         "less stretched and closer to the frames, each by more than " +
-         percent + " %: then the one whose smaller gain of the two is the largest";
+         "less stretched and closer to the frames, " +
+         marginRule(margin);
 }
 } // namespace clothtrack

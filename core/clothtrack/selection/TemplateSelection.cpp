@@ -114,4 +114,9 @@ bool isCollectionOfPoses(const std::vector<bool>& continuesPrevious)
   const auto unrelated = std::count(continuesPrevious.begin() + 1, continuesPrevious.end(), false);
   return 2 * unrelated >= static_cast<std::ptrdiff_t>(continuesPrevious.size() - 1);
 }
+
+int defaultTemplateCandidates(const std::vector<bool>& continuesPrevious)
+{
+  return isCollectionOfPoses(continuesPrevious) ? 3 : 1;
+}
 } // namespace clothtrack

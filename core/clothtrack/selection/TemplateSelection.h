@@ -71,4 +71,10 @@ std::vector<int> templateFramesByPose(const TemplateSelection& selection,
 /// sequence: at least half of the frames after the first do not continue their predecessor
 /// (`continuesPrevious`, one per frame, BodyFrameFit::continuesPrevious).
 bool isCollectionOfPoses(const std::vector<bool>& continuesPrevious);
+
+/// Template frames worth aligning under when none is asked for: 3 on a collection of poses, where
+/// the pose alone can choose a frame whose body is wrong and every frame starts from the template
+/// (BENCHMARKS.md, "Collections of unrelated poses: the template chosen by the alignment"); 1 on
+/// a sequence, whose neighbouring frames carry each other.
+int defaultTemplateCandidates(const std::vector<bool>& continuesPrevious);
 } // namespace clothtrack
