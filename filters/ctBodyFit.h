@@ -81,7 +81,8 @@ public:
   virtual bool GetStatureStart();
   vtkBooleanMacro(StatureStart, bool);
   /// Start frames unrelated to their predecessor again with their limbs at rest, aimed at the
-  /// extremities their fit leaves unpaired, and swapped in pairs (on by default).
+  /// extremities their fit leaves unpaired, and swapped in pairs, and, on a collection, those
+  /// explained worst also turned half round (on by default).
   virtual void SetLimbRestarts(bool value);
   virtual bool GetLimbRestarts();
   vtkBooleanMacro(LimbRestarts, bool);

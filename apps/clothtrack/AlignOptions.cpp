@@ -99,7 +99,7 @@ void addFitOptions(po::options_description& options, AlignSettings& s, std::stri
       "pass 2 runs under the first only (m; 0: always under both)")(
       "no-limb-restarts", po::bool_switch(),
       "body fit: do not start frames unrelated to their predecessor again with their limbs at "
-      "rest and aimed at the extremities their fit leaves unpaired")(
+      "rest, aimed at the extremities their fit leaves unpaired, or turned half round")(
       "split-body-fit", po::bool_switch(&s.splitBodyFit),
       "under mpirun: each process fits the body to its own segment of the sequence (faster; the "
       "result differs a little from one process's, which is otherwise kept bit for bit)")(

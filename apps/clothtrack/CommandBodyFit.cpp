@@ -82,7 +82,8 @@ std::optional<BodyFitSettings> parseBodyFitSettings(const Args& args)
       "runs under the first only (m; 0: always under both)")(
       "no-limb-restarts", po::bool_switch(),
       "do not start frames unrelated to their predecessor again with their limbs at rest, "
-      "aimed at the extremities their fit leaves unpaired, or swapped in pairs");
+      "aimed at the extremities their fit leaves unpaired, swapped in pairs, or (on a "
+      "collection, those explained worst) turned half round");
   addSequenceOptions(options, s.sequence);
   po::positional_options_description positional;
   positional.add("input", 1);

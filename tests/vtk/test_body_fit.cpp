@@ -554,39 +554,46 @@ TEST(BodyFit, StartsTheLimbsOfACollectionsFirstFrameAgain)
   EXPECT_LT(rightAnkle, 0.08);
 }
 
+/// Two poses of a random collection: crouching on bent knees, then standing with both arms
+/// raised, turned 113 degrees further.
+std::vector<BodyPose> crouchThenArmsRaised()
+{
+  return {unrelatedPose(1.57, {-0.16, 0.0, -0.24},
+                        {{Spine1, {0.10, 0.02, 0.15}},
+                         {Spine2, {0.04, 0.05, 0.0}},
+                         {Neck, {0.18, -0.14, 0.0}},
+                         {LeftShoulder, {0.41, 0.23, 0.18}},
+                         {LeftElbow, {-1.37, 0, 0}},
+                         {RightShoulder, {-0.12, 0.28, -0.65}},
+                         {RightElbow, {-2.14, 0, 0}},
+                         {LeftHip, {-0.78, -0.16, -0.47}},
+                         {LeftKnee, {1.17, 0, 0}},
+                         {LeftAnkle, {-0.07, 0, 0}},
+                         {RightHip, {-0.86, 0.28, 0.41}},
+                         {RightKnee, {1.38, 0, 0}},
+                         {RightAnkle, {0.06, 0, 0}}}),
+          unrelatedPose(-0.39, {-0.01, 0.0, -0.36},
+                        {{Spine1, {0.05, -0.26, -0.06}},
+                         {Spine2, {0.28, 0.04, 0.0}},
+                         {Neck, {-0.06, -0.23, 0.0}},
+                         {LeftShoulder, {-0.17, 0.42, 1.06}},
+                         {LeftElbow, {-1.87, 0, 0}},
+                         {RightShoulder, {-0.33, -0.50, 1.26}},
+                         {RightElbow, {-0.82, 0, 0}},
+                         {LeftHip, {0.27, -0.30, 0.03}},
+                         {LeftKnee, {0.24, 0, 0}},
+                         {LeftAnkle, {-0.30, 0, 0}},
+                         {RightKnee, {0.09, 0, 0}},
+                         {RightAnkle, {-0.26, 0, 0}}})};
+}
+
 TEST(BodyFit, TurnsAnUnrelatedPoseThatSettledFacingBackwards)
 {
-  // Two poses of a random collection: crouching on bent knees, then standing with both arms
-  // raised, turned 113 degrees further. Fitted from the crouch, the second frame's body settled
+  // The crouch, then the arms raised (crouchThenArmsRaised). Fitted from the crouch, the second
+  // frame's body settled
   // facing backwards (170 degrees off, its knees straight), close enough to the frame to pass
   // for ok. Fitted from every heading as well, it faces the way the person does.
-  const std::vector<BodyPose> poses = {unrelatedPose(1.57, {-0.16, 0.0, -0.24},
-                                                     {{Spine1, {0.10, 0.02, 0.15}},
-                                                      {Spine2, {0.04, 0.05, 0.0}},
-                                                      {Neck, {0.18, -0.14, 0.0}},
-                                                      {LeftShoulder, {0.41, 0.23, 0.18}},
-                                                      {LeftElbow, {-1.37, 0, 0}},
-                                                      {RightShoulder, {-0.12, 0.28, -0.65}},
-                                                      {RightElbow, {-2.14, 0, 0}},
-                                                      {LeftHip, {-0.78, -0.16, -0.47}},
-                                                      {LeftKnee, {1.17, 0, 0}},
-                                                      {LeftAnkle, {-0.07, 0, 0}},
-                                                      {RightHip, {-0.86, 0.28, 0.41}},
-                                                      {RightKnee, {1.38, 0, 0}},
-                                                      {RightAnkle, {0.06, 0, 0}}}),
-                                       unrelatedPose(-0.39, {-0.01, 0.0, -0.36},
-                                                     {{Spine1, {0.05, -0.26, -0.06}},
-                                                      {Spine2, {0.28, 0.04, 0.0}},
-                                                      {Neck, {-0.06, -0.23, 0.0}},
-                                                      {LeftShoulder, {-0.17, 0.42, 1.06}},
-                                                      {LeftElbow, {-1.87, 0, 0}},
-                                                      {RightShoulder, {-0.33, -0.50, 1.26}},
-                                                      {RightElbow, {-0.82, 0, 0}},
-                                                      {LeftHip, {0.27, -0.30, 0.03}},
-                                                      {LeftKnee, {0.24, 0, 0}},
-                                                      {LeftAnkle, {-0.30, 0, 0}},
-                                                      {RightKnee, {0.09, 0, 0}},
-                                                      {RightAnkle, {-0.26, 0, 0}}})};
+  const std::vector<BodyPose> poses = crouchThenArmsRaised();
   const Sequence collection = unclothedPoses(poses);
   const BodyFitResult fit = fitUnrelatedPoses(collection);
   ASSERT_FALSE(fit.frames[1].continuesPrevious);
@@ -597,6 +604,36 @@ TEST(BodyFit, TurnsAnUnrelatedPoseThatSettledFacingBackwards)
   std::printf("[ measured ] an unrelated pose: facing %.1f degrees off, joint error %.2f cm\n",
               turn * 180.0 / M_PI, 100 * joints);
   EXPECT_LT(turn, M_PI / 6);
+  EXPECT_LT(joints, 0.05);
+}
+
+TEST(BodyFit, TurnsRoundABodyLeftFacingBackwards)
+{
+  // The arms-raised pose fitted from its own pose turned half round settles facing backwards,
+  // its limbs bent into the frame's. Turned round again, limbs at rest and then started again
+  // (refitTurnedRound), it faces the way the person does.
+  const Sequence frame = unclothedPoses({crouchThenArmsRaised()[1]});
+  BodyFitOptions options;
+  bodyfit::SequenceFitter fitter(builtinBodyModel(), options);
+  fitter.samples().setShape(frame.beta);
+  const bodyfit::FrameSurface surface(frame.captures[0], options.extremityPersistence, nullptr);
+  BodyPose backwards = frame.poses[0];
+  backwards.rotations(Pelvis, 1) += M_PI;
+  BodyFrameFit fit;
+  fitter.fitFrame(surface, backwards, nullptr, options.stages, fit);
+  const double before = bodyfit::headingChange(fit.pose, frame.poses[0], Vec3::UnitY());
+  ASSERT_GT(before, M_PI / 2) << "the start from behind should settle facing backwards";
+  fitter.refitTurnedRound(surface, fit);
+  const double after = bodyfit::headingChange(fit.pose, frame.poses[0], Vec3::UnitY());
+  BodyFitResult result;
+  result.beta = frame.beta;
+  result.frames = {fit};
+  double joints, distance;
+  fitErrors(result, frame, Eigen::Matrix3d::Identity(), joints, distance);
+  std::printf("[ measured ] a body facing backwards turned round: %.1f then %.1f degrees off, "
+              "joint error %.2f cm\n",
+              before * 180.0 / M_PI, after * 180.0 / M_PI, 100 * joints);
+  EXPECT_LT(after, M_PI / 6);
   EXPECT_LT(joints, 0.05);
 }
 

@@ -157,6 +157,11 @@ struct BodyFitOptions
   /// kicked out lies beyond the pairing gate of a foot hanging down (BENCHMARKS.md, "collections
   /// of unrelated poses: limbs started again" and "crossed limbs").
   bool limbRestarts = true;
+  /// With limbRestarts, on a collection (at least 3 unrelated frames), each unrelated frame whose
+  /// two-sided score exceeds this factor times their median is also fitted turned half round,
+  /// limbs at rest then restarted, and the better fit kept: a body started from an unrelated pose
+  /// can settle facing backwards, and the heading search then still favours that facing.
+  double turnRoundRatio = 1.2;
   int headings = 8; ///< headings tried when (re)initialising
   /// First-frame fits facing more than 90 degrees apart whose scores are within this factor are
   /// told apart by the pose prior (front and back look alike under loose clothing).
