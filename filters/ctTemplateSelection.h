@@ -19,8 +19,9 @@
  * Output port 0: the template mesh (field data TemplateFrame, TemplateCriterion, and
  * CollectionOfPoses: 1 when at least half of the frames after the first do not continue their
  * predecessor, clothtrack::isCollectionOfPoses; DefaultTemplateCandidates: the template frames
- * worth aligning under when none is given, clothtrack::defaultTemplateCandidates). Output port 1: a vtkTable with every frame's
- * criteria (RestPoseDistance NaN where unknown), PoseOrder (the order in which the rest-pose
+ * worth aligning under when none is given, clothtrack::defaultTemplateCandidates). Output port 1:
+ * a vtkTable with every frame's criteria (RestPoseDistance NaN where unknown), PoseOrder (the
+ * order in which the rest-pose
  * criterion would choose the frames, clothtrack::templateFramesByPose; -1 for the others or
  * when it did not decide) and the choice.
  */

@@ -564,8 +564,7 @@ public:
     turned.pose = start;
     turned.energy = fitPose(frame, turned.pose, nullptr, options_.stages, options_.extremityGate,
                             &turned.extremitiesMatched);
-    measure(frame, turned);
-    refitLimbs(frame, turned);
+    refitLimbs(frame, turned); // its restarts and adopt() below measure what they keep
     if (explainsBetter(frame, turned.pose, fit.pose)) adopt(frame, turned, fit);
   }
 
