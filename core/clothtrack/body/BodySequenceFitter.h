@@ -2,6 +2,7 @@
 // The body fit's minimisation (Levenberg-Marquardt on poses and shape) over a sequence. Internal to
 // the body fit (BodyFit.cpp).
 #include "BodyFitTerms.h"
+#include "TurnedPose.h"
 
 #include <clothtrack/base/Error.h>
 #include <clothtrack/mesh/PointIndex.h>
@@ -19,7 +20,7 @@ class SequenceFitter
 {
 public:
   SequenceFitter(const BodyModel& model, const BodyFitOptions& options)
-      : options_(options), samples_(model, options.samples),
+      : options_(options), samples_(model, options.samples), restJoints_(model.joints),
         priorWeights_(jointPriorWeights(options)), reachTolerance_(options.reachTolerance)
   {
     for (int i = 0; i < samples_.numSamples(); ++i)
@@ -543,29 +544,36 @@ public:
     refitFrom(frame, best, fit);
   }
 
-  /// The body turned half round about the up axis through its centre, its limbs at rest, fitted
-  /// fully and its limbs started again (refitLimbs); kept when it explains the frame better
-  /// (explainsBetter). The every-heading search ranks headings before the limbs have settled,
-  /// and its best can face backwards with the knees straight and the elbows bent the other way
-  /// into the frame's limbs; only with its limbs restarted does the body facing the right way
-  /// explain the frame better (before that, worse on every frame measured).
+  /// The body turned half round, fitted fully from two starts and its limbs started again
+  /// (refitLimbs) after each; each kept when it explains the frame better (explainsBetter).
+  /// The every-heading search ranks headings before the limbs have settled, and its best can
+  /// face backwards with the knees straight and the elbows bent the other way into the frame's
+  /// limbs; only with its limbs restarted does the body facing the right way explain the frame
+  /// better (before that, worse on every frame measured). The first start turns the body about
+  /// the up axis through its centre with its limbs at rest; the second turns it in place
+  /// (turnedInPlace), each limb where its opposite lay, which settled facing the right way on
+  /// three frames where the first settled facing backwards again or with its arms crossed.
   void refitTurnedRound(const FrameSurface& frame, BodyFrameFit& fit)
   {
+    const BodyPose kept = fit.pose;
     const int n = samples_.numSamples();
-    const Vec3 centre = samples_.pose(fit.pose).topRows(n).colwise().mean().transpose();
+    const Vec3 centre = samples_.pose(kept).topRows(n).colwise().mean().transpose();
     const Eigen::Isometry3d halfTurn = Eigen::Translation3d(centre) *
                                        Eigen::AngleAxisd(M_PI, options_.up.normalized()) *
                                        Eigen::Translation3d(-centre);
-    BodyPose start = movedRigidly(fit.pose, halfTurn);
-    const Eigen::RowVector3d root = start.rotations.row(Pelvis);
-    start.rotations.setZero();
-    start.rotations.row(Pelvis) = root;
-    BodyFrameFit turned;
-    turned.pose = start;
-    turned.energy = fitPose(frame, turned.pose, nullptr, options_.stages, options_.extremityGate,
-                            &turned.extremitiesMatched);
-    refitLimbs(frame, turned); // its restarts and adopt() below measure what they keep
-    if (explainsBetter(frame, turned.pose, fit.pose)) adopt(frame, turned, fit);
+    BodyPose atRest = movedRigidly(kept, halfTurn);
+    const Eigen::RowVector3d root = atRest.rotations.row(Pelvis);
+    atRest.rotations.setZero();
+    atRest.rotations.row(Pelvis) = root;
+    for (const BodyPose& start : {atRest, turnedInPlace(kept, restJoints_)})
+    {
+      BodyFrameFit turned;
+      turned.pose = start;
+      turned.energy = fitPose(frame, turned.pose, nullptr, options_.stages, options_.extremityGate,
+                              &turned.extremitiesMatched);
+      refitLimbs(frame, turned); // its restarts and adopt() below measure what they keep
+      if (explainsBetter(frame, turned.pose, fit.pose)) adopt(frame, turned, fit);
+    }
   }
 
   /// A frame that no neighbour vouches for, started again from its own fit with each limb (each
@@ -837,7 +845,8 @@ private:
 
   const BodyFitOptions& options_;
   BodySamples samples_;
-  Eigen::VectorXd priorWeights_;               ///< per rotation parameter
+  Points restJoints_;            ///< the mean shape's joints at rest: the body's own axes
+  Eigen::VectorXd priorWeights_; ///< per rotation parameter
   std::vector<int> torsoSamples_, armSamples_; ///< by their dominant joints (armsInsideTorso)
   double reachTolerance_;
 };
