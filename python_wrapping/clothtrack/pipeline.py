@@ -164,7 +164,9 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
     predict_radius  width (metres) of the landmark-driven start of the frames whose body fit is
                     doubtful (of every frame with start_from_body=False); 0 starts them from
                     their neighbour's fit unchanged, as the paper does
-    progress        optional callable(stage_name, fraction) called as the stages advance
+    progress        optional callable(stage_name, fraction) called as the stages advance:
+                    "body fit", "template selection" (when template_frame is None),
+                    "correspondence", "template fit", "alignment error" (with a ground truth)
     threads         threads of each stage (0: every core)
     model           the body model: None or "builtin" (the built-in model), a model file (.vtp,
                     `clothtrack body-model`, `clothtrack import-makehuman`), or a list of these.
@@ -228,13 +230,43 @@ def align(frames, ground_truth=None, template_frame=None, solver="exact", predic
     return _choose_model(alignments)
 
 
+class _Stages:
+    """The named algorithms of one alignment: each one's first error kept and its progress
+    reported under its name (prefixed), so that the stages can be updated in several steps."""
+
+    def __init__(self, settings, prefix):
+        self.progress = settings["progress"]
+        self.prefix = prefix
+        self.catchers = {}
+
+    def add(self, name, algorithm):
+        name = self.prefix + name
+        self.catchers[name] = _ErrorCatcher(algorithm)
+        if self.progress is not None:
+            progress = self.progress
+            algorithm.AddObserver("ProgressEvent", lambda obj, _event: progress(name, obj.GetProgress()))
+        return algorithm
+
+    def raise_first_error(self):
+        for name, catcher in self.catchers.items():
+            if catcher.message:
+                raise RuntimeError("%s: %s" % (name, catcher.message))
+
+
 def _align_choosing_template(sequence, truth, model, settings, prefix):
     """The alignment under the template frame chosen and, on a collection of poses, under the
-    next ones by pose (the first alignment's body fit reused), one kept as the app keeps it."""
-    first = _align_under(sequence, truth, model, settings, prefix)
-    if settings["template_frame"] is not None or settings["template_candidates"] == 1:
+    next ones by pose (the first alignment's body fit reused), one kept as the app keeps it. The
+    template frame is chosen once, by ctTemplateSelection, and handed to every alignment."""
+    started = time.monotonic()
+    stages = _Stages(settings, prefix)
+    body = _body_fit(sequence, model, settings, stages)
+    if settings["template_frame"] is not None:
+        return _align_under(sequence, truth, model, settings, stages, body, started)
+    chosen, by_pose, default_count = _select_template(sequence, body, settings, stages)
+    first = _align_under(sequence, truth, model, dict(settings, template_frame=chosen), stages, body,
+                         started)
+    if settings["template_candidates"] == 1:
         return first
-    by_pose, default_count = _frames_by_pose(sequence, first.body_fit, settings)
     if by_pose:
         first.metrics["template_frames_by_pose"] = by_pose
     count = settings["template_candidates"] or default_count
@@ -244,27 +276,44 @@ def _align_choosing_template(sequence, truth, model, settings, prefix):
     candidates = [first]
     for k in further:
         one = dict(settings, template_frame=k)
-        candidates.append(_align_under(sequence, truth, model, one, "%stemplate frame %d: " % (prefix, k),
-                                       body=first.body_fit))
+        candidates.append(_align_under(sequence, truth, model, one,
+                                       _Stages(settings, "%stemplate frame %d: " % (prefix, k)), body,
+                                       time.monotonic()))
     return _choose_template(candidates, by_pose)
 
 
-def _frames_by_pose(sequence, body, settings):
-    """The frames the rest-pose criterion would choose in turn (empty when it did not decide),
-    and how many template frames to try when none is asked for (3 on a collection of unrelated
-    poses, 1 on a sequence), from ctTemplateSelection."""
+def _body_fit(sequence, model, settings, stages):
+    """The ctBodyFit of `sequence` under body model `model` (a label of _models_of), not yet
+    updated; its stages (and the model reader's) join `stages`."""
     import clothtrack
 
-    selection = clothtrack.ctTemplateSelection()
+    body = clothtrack.ctBodyFit()
+    body.SetInputData(sequence)
+    body.SetShapeFrames(min(settings["shape_frames"], sequence.GetNumberOfBlocks()))
+    if model != _BUILTIN_MODEL:
+        reader = stages.add("body model", clothtrack.ctBodyModelReader())
+        reader.SetFileName(model)
+        body.SetBodyModelConnection(reader.GetOutputPort())
+    _set_stage_keywords("body", body, settings["options"])
+    body.SetNumberOfThreads(settings["threads"])
+    return stages.add("body fit", body)
+
+
+def _select_template(sequence, body, settings, stages):
+    """The template frame ctTemplateSelection chooses (the body fit updated first), the frames the
+    rest-pose criterion would choose in turn (empty when it did not decide), and how many
+    template frames to try when none is asked for (3 on a collection of unrelated poses, 1 on a
+    sequence)."""
+    import clothtrack
+
+    selection = stages.add("template selection", clothtrack.ctTemplateSelection())
     selection.SetInputData(0, sequence)
     selection.SetInputConnection(1, body.GetOutputPort(1))
     selection.SetTemplateCriterion(1 if settings["template_criterion"] == "rest-pose" else 0)
     selection.SetNumberOfThreads(settings["threads"])
     _set_stage_keywords("selection", selection, settings["options"])
-    catcher = _ErrorCatcher(selection)
     selection.Update()
-    if catcher.message:
-        raise RuntimeError("template selection: %s" % catcher.message)
+    stages.raise_first_error()
     table = selection.GetCriteriaOutput()
     order = {}
     for row in range(table.GetNumberOfRows()):
@@ -272,37 +321,25 @@ def _frames_by_pose(sequence, body, settings):
         if place >= 0:
             order[place] = table.GetValueByName(row, "Frame").ToInt()
     fields = selection.GetOutput().GetFieldData()
+    chosen = int(fields.GetArray("TemplateFrame").GetTuple1(0))
     default_count = int(fields.GetArray("DefaultTemplateCandidates").GetTuple1(0))
-    return [order[place] for place in sorted(order)], default_count
+    return chosen, [order[place] for place in sorted(order)], default_count
 
 
-def _align_under(sequence, truth, model, settings, prefix, body=None):
-    """One alignment of `sequence` under body model `model` (a label of _models_of); `prefix`
-    starts its stage names. `body`, an updated ctBodyFit of the same sequence and model, is
-    reused rather than fitted again."""
+def _align_under(sequence, truth, model, settings, stages, body, started):
+    """One alignment of `sequence` under body model `model` (a label of _models_of) and the
+    template frame settings["template_frame"]; `body` is its ctBodyFit (updated or not), the new
+    stages join `stages`, and its seconds count from `started` (time.monotonic())."""
     import clothtrack
 
     options = settings["options"]
-    stages = {}
-    if body is None:
-        body = clothtrack.ctBodyFit()
-        body.SetInputData(sequence)
-        body.SetShapeFrames(min(settings["shape_frames"], sequence.GetNumberOfBlocks()))
-        if model != _BUILTIN_MODEL:
-            reader = clothtrack.ctBodyModelReader()
-            reader.SetFileName(model)
-            body.SetBodyModelConnection(reader.GetOutputPort())
-            stages["body model"] = reader
-        _set_stage_keywords("body", body, options)
-        stages["body fit"] = body
-    correspondence = clothtrack.ctPatchCorrespondence()
+    correspondence = stages.add("correspondence", clothtrack.ctPatchCorrespondence())
     correspondence.SetInputData(0, sequence)
     correspondence.SetInputConnection(1, body.GetOutputPort(1))
     correspondence.SetTemplateCriterion(1 if settings["template_criterion"] == "rest-pose" else 0)
     _set_stage_keywords("correspondence", correspondence, options)
-    if settings["template_frame"] is not None:
-        correspondence.SetTemplateFrame(settings["template_frame"])
-    fit = clothtrack.ctTemplateFit()
+    correspondence.SetTemplateFrame(settings["template_frame"])
+    fit = stages.add("template fit", clothtrack.ctTemplateFit())
     fit.SetInputData(0, sequence)
     fit.SetInputConnection(1, correspondence.GetOutputPort(0))
     fit.SetInputConnection(2, body.GetOutputPort(1))
@@ -310,30 +347,18 @@ def _align_under(sequence, truth, model, settings, prefix, body=None):
     fit.SetSolver(fit.LBFGS if settings["solver"] == "lbfgs" else fit.EXACT)
     fit.SetPredictRadius(settings["predict_radius"])
     _set_stage_keywords("fit", fit, options)
-    for algorithm in (body, correspondence, fit):
+    for algorithm in (correspondence, fit):
         algorithm.SetNumberOfThreads(settings["threads"])
     last = fit
     if truth is not None:
-        last = clothtrack.ctAlignmentError()
+        last = stages.add("alignment error", clothtrack.ctAlignmentError())
         last.SetInputConnection(0, fit.GetOutputPort(0))
         last.SetInputData(1, truth)
         _set_stage_keywords("error", last, options)
 
-    stages.update({"correspondence": correspondence, "template fit": fit})
-    if last is not fit:
-        stages["alignment error"] = last
-    stages = {prefix + name: algorithm for name, algorithm in stages.items()}
-    catchers = {name: _ErrorCatcher(algorithm) for name, algorithm in stages.items()}
-    progress = settings["progress"]
-    if progress is not None:
-        for name, algorithm in stages.items():
-            algorithm.AddObserver("ProgressEvent", lambda obj, _event, name=name: progress(name, obj.GetProgress()))
-    start = time.monotonic()
     last.Update()
-    seconds = time.monotonic() - start
-    for name, catcher in catchers.items():
-        if catcher.message:
-            raise RuntimeError("%s: %s" % (name, catcher.message))
+    seconds = time.monotonic() - started
+    stages.raise_first_error()
 
     output = last.GetOutputDataObject(0)
     aligned = [output.GetBlock(k) for k in range(output.GetNumberOfBlocks())]

@@ -31,7 +31,8 @@ class AlignTest(unittest.TestCase):
         result = clothtrack.align(os.path.join(self.data, "frames"),
                                   ground_truth=os.path.join(self.data, "ground_truth"), shape_frames=2,
                                   progress=lambda stage, fraction: stages.add(stage))
-        self.assertEqual(stages, {"body fit", "correspondence", "template fit", "alignment error"})
+        self.assertEqual(stages, {"body fit", "template selection", "correspondence", "template fit",
+                                  "alignment error"})
         n = result.aligned[0].GetNumberOfPoints()
         self.assertEqual(result.positions.shape, (FRAMES, n, 3))
         self.assertEqual(result.faces.shape[1], 3)
