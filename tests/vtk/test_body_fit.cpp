@@ -637,6 +637,45 @@ TEST(BodyFit, TurnsRoundABodyLeftFacingBackwards)
   EXPECT_LT(joints, 0.05);
 }
 
+TEST(BodyFit, StandsLegsAcrossAWideStance)
+{
+  // Feet planted wide apart. Started with the pelvis over the left leg and both legs in it, the
+  // fit leaves the right leg of the frame empty. Started again across the two feet
+  // (refitWithLegsAcross), the body stands in both legs.
+  const BodyPose wide = unrelatedPose(0.3, Vec3::Zero(),
+                                      {{LeftHip, {0.0, 0.0, 0.5}},
+                                       {RightHip, {0.0, 0.0, -0.5}},
+                                       {LeftShoulder, {0.0, 0.0, 0.9}},
+                                       {RightShoulder, {0.0, 0.0, -0.9}}});
+  const Sequence frame = unclothedPoses({wide});
+  BodyFitOptions options;
+  bodyfit::SequenceFitter fitter(builtinBodyModel(), options);
+  fitter.samples().setShape(frame.beta);
+  const bodyfit::FrameSurface surface(frame.captures[0], options.extremityPersistence, nullptr);
+  BodyPose oneLeg = wide;
+  oneLeg.translation += Vec3(0.25 * std::cos(0.3), 0.0, -0.25 * std::sin(0.3));
+  oneLeg.rotations.row(LeftHip) << 0.0, 0.0, 0.25;
+  oneLeg.rotations.row(RightHip) << 0.0, 0.0, 0.45;
+  BodyFrameFit fit;
+  fitter.fitFrame(surface, oneLeg, nullptr, options.stages, fit);
+  const double before = fit.frameDistance;
+  ASSERT_GT(before, 0.06) << "the start in one leg should leave the other leg of the frame empty";
+  fitter.refitWithLegsAcross(surface, fit);
+  BodyFitResult result;
+  result.beta = frame.beta;
+  result.frames = {fit};
+  double joints, distance;
+  fitErrors(result, frame, Eigen::Matrix3d::Identity(), joints, distance);
+  const auto [leftAnkle, rightAnkle] = ankleErrors(result, frame, 0);
+  std::printf("[ measured ] legs across a wide stance: frame to body %.2f then %.2f cm, joint "
+              "error %.2f cm, ankles %.2f and %.2f cm\n",
+              100 * before, 100 * fit.frameDistance, 100 * joints, 100 * leftAnkle,
+              100 * rightAnkle);
+  EXPECT_LT(fit.frameDistance, 0.5 * before);
+  EXPECT_LT(leftAnkle, 0.08);
+  EXPECT_LT(rightAnkle, 0.08);
+}
+
 TEST(BodyFit, GrowsToFillADeeperTorso)
 {
   // The torso of a person in a tight shirt made 40 % deeper, front and back. Fitted from the

@@ -485,7 +485,8 @@ void flagIfUnexplained(double limit, BodyFrameFit& fit)
 
 /// Poor fits started again from the poses of the sequence's ok fits (at most 24, spread over
 /// it): a fit that went wrong where its neighbours did not, or a pose that a collection repeats.
-/// Of the frames `own` only.
+/// Those still poor are started again with their legs across the frame's two lowest detections
+/// (a fit with both legs in one of the frame's). Of the frames `own` only.
 void recoverPoorFits(SequenceFitter& fitter, FrameSurfaces& surfaces,
                      const std::vector<int>& usable, const std::vector<int>& own, double limit,
                      std::vector<BodyFrameFit>& fits)
@@ -496,6 +497,11 @@ void recoverPoorFits(SequenceFitter& fitter, FrameSurfaces& surfaces,
     if (fits[i].status != BodyFitStatus::Poor) continue;
     fitter.refitFromPoses(surfaces.get(i), poses, fits[i]);
     flagIfUnexplained(limit, fits[i]);
+    if (fits[i].status == BodyFitStatus::Poor)
+    {
+      fitter.refitWithLegsAcross(surfaces.get(i), fits[i]);
+      flagIfUnexplained(limit, fits[i]);
+    }
     surfaces.release(i);
   }
 }

@@ -589,6 +589,36 @@ public:
     refitWithPairsSwapped(frame, fit);
   }
 
+  /// Both legs started across the frame's two lowest detections that are not paired with the
+  /// head or a hand: the pelvis moved horizontally over their midpoint and each leg aimed at one
+  /// (both ways round), kept when it explains the frame better. A fit with both legs in one of
+  /// the frame's legs leaves the other empty, and a single leg aimed from a pelvis standing off
+  /// it crosses the gap between the frame's legs and is drawn back (BENCHMARKS.md).
+  void refitWithLegsAcross(const FrameSurface& frame, BodyFrameFit& fit)
+  {
+    const std::array<int, kNumExtremities> match = pairedExtremities(frame, fit.pose);
+    std::vector<int> feet;
+    for (int d = 0; d < static_cast<int>(frame.extremities.size()); ++d)
+      if (match[0] != d && match[1] != d && match[2] != d) feet.push_back(d);
+    if (feet.size() < 2) return;
+    // Frames are read Y up.
+    std::sort(feet.begin(), feet.end(),
+              [&](int a, int b) { return frame.extremities[a].y() < frame.extremities[b].y(); });
+    const Vec3 a = frame.extremities[feet[0]];
+    const Vec3 b = frame.extremities[feet[1]];
+    const BodyPose current = fit.pose;
+    for (int swapped = 0; swapped < 2; ++swapped)
+    {
+      BodyPose start = current;
+      const Vec3 pelvis = samples_.jointTransforms(start)[Pelvis].topRightCorner<3, 1>();
+      Vec3 shift = 0.5 * (a + b) - pelvis;
+      shift.y() = 0.0;
+      start.translation += shift;
+      if (aimLimb(kLimbs[2], swapped ? b : a, start) && aimLimb(kLimbs[3], swapped ? a : b, start))
+        refitFrom(frame, start, fit);
+    }
+  }
+
   /// Share of the arm samples (upper arms and forearms) lying more than kInsideTorso below the
   /// surface at their nearest torso sample: arms that cross through the chest to the other
   /// side's hands. An unclothed frame is explained about as closely by them as by arms that do
