@@ -37,6 +37,13 @@ const std::vector<Preset>& presets()
   };
   return all;
 }
+
+const Preset* findPreset(const std::string& name)
+{
+  for (const auto& p : presets())
+    if (name == p.name) return &p;
+  return nullptr;
+}
 } // namespace
 
 const std::vector<std::string>& syntheticPresets()
@@ -93,13 +100,9 @@ void setStature(const BodyModel& model, double stature, Eigen::VectorXd& beta)
 }
 } // namespace
 
-Eigen::VectorXd generateSyntheticSequence(const BodyModel& model, const SyntheticOptions& options,
-                                          const std::function<void(const SyntheticFrame&)>& sink)
+void checkSyntheticOptions(const SyntheticOptions& options)
 {
-  const Preset* preset = nullptr;
-  for (const auto& p : presets())
-    if (options.preset == p.name) preset = &p;
-  if (!preset)
+  if (!findPreset(options.preset))
   {
     std::string all;
     for (const auto& n : syntheticPresets()) all += (all.empty() ? "" : ", ") + n;
@@ -108,6 +111,13 @@ Eigen::VectorXd generateSyntheticSequence(const BodyModel& model, const Syntheti
   if (options.frames < 1 || options.frames > 100000)
     throw Error("the number of frames must be between 1 and 100000");
   if (!(options.fps > 0)) throw Error("the frame rate must be positive");
+}
+
+Eigen::VectorXd generateSyntheticSequence(const BodyModel& model, const SyntheticOptions& options,
+                                          const std::function<void(const SyntheticFrame&)>& sink)
+{
+  checkSyntheticOptions(options);
+  const Preset* preset = findPreset(options.preset);
 
   std::mt19937 rng(options.seed);
   std::normal_distribution<double> normal(0.0, 1.0);

@@ -47,6 +47,10 @@ CTFILTERS_EXPORT const std::vector<std::string>& syntheticMarkerNames();
 /// Height of the body of shape beta in rest pose (extent along y, the model's up axis), metres.
 CTFILTERS_EXPORT double restHeight(const BodyModel& model, const Eigen::VectorXd& beta);
 
+/// Throws Error on an unknown preset or bad options; cheap, so front ends check before they build
+/// the body model.
+CTFILTERS_EXPORT void checkSyntheticOptions(const SyntheticOptions& options);
+
 /// Runs the simulation frame by frame; `sink` receives each frame in order (memory stays flat).
 /// Returns the shape beta used. Throws Error on an unknown preset or bad options.
 CTFILTERS_EXPORT Eigen::VectorXd

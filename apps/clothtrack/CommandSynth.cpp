@@ -59,6 +59,7 @@ int runSynth(const Args& args)
     throw UsageError{"--voxel must be between 0.002 and 0.2 metres"};
   capture.fillEnclosed = !values["no-hull-fill"].as<bool>();
   synth.seed = static_cast<unsigned>(seed);
+  checkSyntheticOptions(synth);
   makeOutputFolders(output, {"ground_truth"});
 
   std::fprintf(stderr, "building the built-in body model...\n");

@@ -98,6 +98,11 @@ if (NOT marker_count EQUAL 43) # header + 3 frames x 14 markers
   message(FATAL_ERROR "markers.csv has ${marker_count} lines, expected 43")
 endif ()
 expect_run(1 "unknown preset 'kilt-jog'" synth --preset kilt-jog -o ${WORK}/synth2)
+# A wrong option is refused before the body model is built (seconds of work) or a folder written.
+if (last_output MATCHES "building the built-in body model" OR EXISTS ${WORK}/synth2)
+  message(FATAL_ERROR "synth with an unknown preset started work before refusing it:\n${last_output}")
+endif ()
+expect_run(1 "the number of frames must be between 1 and 100000" synth --frames 0 -o ${WORK}/synth2)
 
 # select-template on the synthetic capture: a table and a chosen frame.
 expect_run(0 "template frame:" select-template ${WORK}/synth/frames --persistence 1 --csv ${WORK}/criteria.csv)
