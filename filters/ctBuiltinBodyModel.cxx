@@ -5,6 +5,7 @@
 #include <clothtrack/base/Error.h>
 #include <clothtrack/body/BodyModelBuilder.h>
 #include <clothtrack/body/ProceduralBody.h>
+#include <clothtrack/body/ProceduralBodyGrid.h>
 #include <clothtrack/mesh/Components.h>
 #include <clothtrack/mesh/MeshValidation.h>
 
@@ -15,7 +16,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkQuadricDecimation.h>
-#include <vtkSMPTools.h>
 #include <vtkWindowedSincPolyDataFilter.h>
 
 namespace clothtrack
@@ -23,30 +23,16 @@ namespace clothtrack
 TriangleMesh proceduralBodyMesh(double stature, int targetVertices)
 {
   const SkeletonGeometry skeleton = proceduralSkeleton(stature);
-  // A 6 mm grid resolves the thumbs and the nose; decimation then brings it to the target size.
-  const double h = 0.0035 * stature;
-  const double lo[3] = {-0.45 * stature, -0.01 * stature, -0.12 * stature};
-  const double hi[3] = {0.45 * stature, 1.01 * stature, 0.16 * stature};
-  int dims[3];
-  for (int k = 0; k < 3; ++k) dims[k] = static_cast<int>((hi[k] - lo[k]) / h) + 1;
+  // Contoured at 6 mm, then decimated to the target size.
+  const DistanceGrid samples = builtinBodyGrid(stature);
+  std::vector<float> values = proceduralBodyDistanceGrid(skeleton, stature, samples);
   vtkNew<vtkImageData> grid;
-  grid->SetDimensions(dims);
-  grid->SetOrigin(lo[0], lo[1], lo[2]);
-  grid->SetSpacing(h, h, h);
+  grid->SetDimensions(samples.dims.data());
+  grid->SetOrigin(samples.origin.data());
+  grid->SetSpacing(samples.spacing, samples.spacing, samples.spacing);
   vtkNew<vtkFloatArray> distance;
-  distance->SetNumberOfTuples(static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2]);
-  vtkSMPTools::For(
-      0, dims[2],
-      [&](vtkIdType k0, vtkIdType k1)
-      {
-        for (vtkIdType k = k0; k < k1; ++k)
-          for (int j = 0; j < dims[1]; ++j)
-            for (int i = 0; i < dims[0]; ++i)
-              distance->SetValue(
-                  i + dims[0] * (j + dims[1] * k),
-                  static_cast<float>(proceduralBodyDistance(
-                      skeleton, stature, Vec3(lo[0] + i * h, lo[1] + j * h, lo[2] + k * h))));
-      });
+  distance->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), distance->GetPointer(0));
   grid->GetPointData()->SetScalars(distance);
   vtkNew<vtkFlyingEdges3D> contour;
   contour->SetInputData(grid);
