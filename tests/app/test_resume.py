@@ -57,7 +57,7 @@ def main():
     os.makedirs(work)
     synth = os.path.join(work, "synth")
     subprocess.run([app, "synth", "--preset", "shirt-armraise", "--frames", "6", "--seed", "5",
-                    "-o", synth], check=True, stdout=subprocess.DEVNULL)
+                    "--voxel", "0.02", "-o", synth], check=True, stdout=subprocess.DEVNULL)
     reference, resumed = os.path.join(work, "reference"), os.path.join(work, "resumed")
     started = time.monotonic()
     run_until(align(app, synth, reference), os.path.join(work, "reference.log"), lambda t: False)

@@ -51,7 +51,8 @@ def image_difference(a, b):
 shutil.rmtree(scratch, ignore_errors=True)
 os.makedirs(scratch)
 data = os.path.join(scratch, "synth")
-subprocess.run([app, "synth", "--preset", "skirt-turn", "--frames", "4", "--seed", "3", "-o", data],
+subprocess.run([app, "synth", "--preset", "skirt-turn", "--frames", "4", "--seed", "3", "--voxel", "0.02",
+                "-o", data],
                check=True, stdout=subprocess.DEVNULL)
 
 pipeline = clothtrack_pipeline.build_pipeline(os.path.join(data, "frames"), os.path.join(data, "ground_truth"),

@@ -40,7 +40,8 @@ os.environ.update(PYTHONPATH=pythonpath, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_
 shutil.rmtree(scratch, ignore_errors=True)
 os.makedirs(scratch)
 capture = os.path.join(scratch, "synth")
-subprocess.run([app, "synth", "--preset", "skirt-turn", "--frames", "4", "--seed", "3", "-o", capture],
+subprocess.run([app, "synth", "--preset", "skirt-turn", "--frames", "4", "--seed", "3", "--voxel", "0.02",
+                "-o", capture],
                check=True, stdout=subprocess.DEVNULL)
 one = run_probe(1, os.path.join(scratch, "one"))
 two = run_probe(2, os.path.join(scratch, "two"))

@@ -20,7 +20,7 @@ class AlignTest(unittest.TestCase):
         cls.folder = tempfile.TemporaryDirectory()
         cls.data = os.path.join(cls.folder.name, "synth")
         subprocess.run([os.environ["CLOTHTRACK_APP"], "synth", "--preset", "skirt-turn", "--frames", str(FRAMES),
-                        "--seed", "3", "-o", cls.data], check=True, capture_output=True)
+                        "--seed", "3", "--voxel", "0.02", "-o", cls.data], check=True, capture_output=True)
 
     @classmethod
     def tearDownClass(cls):
