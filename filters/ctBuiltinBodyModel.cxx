@@ -31,8 +31,8 @@ TriangleMesh proceduralBodyMesh(double stature, int targetVertices)
   grid->SetOrigin(samples.origin.data());
   grid->SetSpacing(samples.spacing, samples.spacing, samples.spacing);
   vtkNew<vtkFloatArray> distance;
-  distance->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  std::copy(values.begin(), values.end(), distance->GetPointer(0));
+  // Borrowed, not copied: `values` outlives every filter below (saved: VTK does not free it).
+  distance->SetArray(values.data(), static_cast<vtkIdType>(values.size()), 1);
   grid->GetPointData()->SetScalars(distance);
   vtkNew<vtkFlyingEdges3D> contour;
   contour->SetInputData(grid);
