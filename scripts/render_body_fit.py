@@ -3,12 +3,13 @@
 transferred landmarks as blue dots), one column per frame, front and side views.
 
 usage: PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 scripts/render_body_fit.py \
-           OUT.png BODY_FIT_FOLDER FRAME_FILE:INDEX [FRAME_FILE:INDEX ...]
-BODY_FIT_FOLDER is the output of 'clothtrack body-fit' (bodies/ and landmarks/ inside it).
+           [--unit U] [--up AXIS] OUT.png BODY_FIT_FOLDER FRAME_FILE:INDEX [FRAME_FILE:INDEX ...]
+BODY_FIT_FOLDER is the output of 'clothtrack body-fit' (bodies/ and landmarks/ inside it, in metres
+with Y up); give the frames' --unit and --up as given to body-fit, so that they are read the same way.
 """
+import argparse
 import glob
 import os
-import sys
 
 import clothtrack
 from clothtrack.rendering import colour_actor, offscreen_window, save_png
@@ -46,15 +47,20 @@ def landmark_actor(landmarks):
 
 
 def main():
-    out, folder, specs = sys.argv[1], sys.argv[2], sys.argv[3:]
-    if not specs:
-        sys.exit(__doc__)
+    parser = argparse.ArgumentParser(usage=__doc__)
+    parser.add_argument("--unit", default="m", help="the frames' length unit (as body-fit's --unit)")
+    parser.add_argument("--up", default="y", help="the frames' up axis (as body-fit's --up)")
+    parser.add_argument("out")
+    parser.add_argument("folder")
+    parser.add_argument("specs", nargs="+", metavar="FRAME_FILE:INDEX")
+    args = parser.parse_args()
+    out, folder, specs = args.out, args.folder, args.specs
     columns = len(specs)
     window = offscreen_window(360 * columns, 1200)
     for column, spec in enumerate(specs):
         path, index = spec.rsplit(":", 1)
         index = int(index)
-        frame = clothtrack.read_sequence(path)[0]
+        frame = clothtrack.read_sequence(path, length_unit=args.unit, up_axis=args.up)[0]
         bodies = sorted(glob.glob(os.path.join(folder, "bodies", "*.vtp")))
         marks = sorted(glob.glob(os.path.join(folder, "landmarks", "*.vtp")))
         body = read_vtp(bodies[index])
