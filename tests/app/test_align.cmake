@@ -11,7 +11,8 @@ function(read_metric out)
   set(${out} ${value} PARENT_SCOPE)
 endfunction()
 
-expect_run(0 "wrote 6 frames" synth --preset skirt-turn --frames 6 --seed 3 -o ${WORK}/synth)
+expect_run(0 "wrote 6 frames" synth --preset skirt-turn --frames 6 --seed 3 --voxel 0.02
+  -o ${WORK}/synth)
 expect_run(0 "aligned 6 frames" align ${WORK}/synth/frames --ground-truth ${WORK}/synth/ground_truth
   --markers ${WORK}/synth/markers.csv -o ${WORK}/out)
 expect_files(${WORK}/out "align"
