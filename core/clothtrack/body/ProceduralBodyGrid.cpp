@@ -4,6 +4,7 @@
 
 #include <clothtrack/base/Parallel.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace clothtrack
