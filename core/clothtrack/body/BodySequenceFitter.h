@@ -597,23 +597,24 @@ public:
   void refitWithLegsAcross(const FrameSurface& frame, BodyFrameFit& fit)
   {
     const std::array<int, kNumExtremities> match = pairedExtremities(frame, fit.pose);
+    const int head = match[0], leftHand = match[kLimbs[0].extremity],
+              rightHand = match[kLimbs[1].extremity];
     std::vector<int> feet;
     for (int d = 0; d < static_cast<int>(frame.extremities.size()); ++d)
-      if (match[0] != d && match[1] != d && match[2] != d) feet.push_back(d);
+      if (d != head && d != leftHand && d != rightHand) feet.push_back(d);
     if (feet.size() < 2) return;
     // Frames are read Y up.
     std::sort(feet.begin(), feet.end(),
               [&](int a, int b) { return frame.extremities[a].y() < frame.extremities[b].y(); });
     const Vec3 a = frame.extremities[feet[0]];
     const Vec3 b = frame.extremities[feet[1]];
-    const BodyPose current = fit.pose;
+    BodyPose across = fit.pose;
+    Vec3 shift = 0.5 * (a + b) - samples_.jointTransforms(across)[Pelvis].topRightCorner<3, 1>();
+    shift.y() = 0.0;
+    across.translation += shift;
     for (int swapped = 0; swapped < 2; ++swapped)
     {
-      BodyPose start = current;
-      const Vec3 pelvis = samples_.jointTransforms(start)[Pelvis].topRightCorner<3, 1>();
-      Vec3 shift = 0.5 * (a + b) - pelvis;
-      shift.y() = 0.0;
-      start.translation += shift;
+      BodyPose start = across;
       if (aimLimb(kLimbs[2], swapped ? b : a, start) && aimLimb(kLimbs[3], swapped ? a : b, start))
         refitFrom(frame, start, fit);
     }
