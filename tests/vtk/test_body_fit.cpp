@@ -607,6 +607,54 @@ TEST(BodyFit, TurnsAnUnrelatedPoseThatSettledFacingBackwards)
   EXPECT_LT(joints, 0.05);
 }
 
+/// Frames in memory that note the fit's progress each time one is asked for.
+class FramesNotingProgress final : public FrameSource
+{
+public:
+  FramesNotingProgress(std::vector<const TriangleMesh*> frames, const double& progress)
+      : frames_(std::move(frames)), progress_(progress)
+  {
+  }
+  int count() const override { return static_cast<int>(frames_.size()); }
+  FramePtr frame(int k) const override
+  {
+    progressWhenAsked.push_back(progress_);
+    return borrowedFrame(*frames_[k]);
+  }
+  mutable std::vector<double> progressWhenAsked;
+
+private:
+  std::vector<const TriangleMesh*> frames_;
+  const double& progress_;
+};
+
+TEST(BodyFit, ReachesTheEndOfItsProgressOnlyWhenDone)
+{
+  // After the passes, the fits of unrelated poses are judged and restarted (turned round, from
+  // other poses, legs across), which reads their frames again: the progress must still be short
+  // of its end then, and never go back.
+  const Sequence collection = unclothedPoses(crouchThenArmsRaised());
+  double last = 0.0;
+  int reports = 0;
+  FramesNotingProgress frames(pointers(collection.captures), last);
+  BodyFitOptions options;
+  options.shapeFrames = 2;
+  fitBodySequence(builtinBodyModel(), frames, options,
+                  [&](double fraction)
+                  {
+                    EXPECT_GE(fraction, last);
+                    last = fraction;
+                    ++reports;
+                    return true;
+                  });
+  ASSERT_GT(frames.progressWhenAsked.size(), 2u);
+  std::printf("[ measured ] %zu frame reads, the last at progress %.3f; %d reports\n",
+              frames.progressWhenAsked.size(), frames.progressWhenAsked.back(), reports);
+  EXPECT_LT(*std::max_element(frames.progressWhenAsked.begin(), frames.progressWhenAsked.end()),
+            1.0);
+  EXPECT_DOUBLE_EQ(last, 1.0);
+}
+
 TEST(BodyFit, TurnsRoundABodyLeftFacingBackwards)
 {
   // The arms-raised pose fitted from its own pose turned half round settles facing backwards,
