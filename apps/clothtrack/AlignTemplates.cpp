@@ -4,6 +4,7 @@
 #include "MetricsFile.h"
 #include "Ranks.h"
 #include "Report.h"
+#include "TextFile.h"
 
 #include <clothtrack/eval/ModelChoice.h>
 #include <clothtrack/selection/TemplateSelection.h>
@@ -73,7 +74,8 @@ nlohmann::json choiceSummary(const AlignSettings& s, const std::vector<nlohmann:
     const int frame = metrics[i]["template_frame"].get<int>();
     nlohmann::json entry = alignmentEntry(
         metrics[i], figures[i],
-        i == 0 ? std::string(".") : fs::relative(candidateFolder(s, frame), s.output).string());
+        static_cast<int>(i) == kept ? std::string(".")
+                                    : fs::relative(candidateFolder(s, frame), s.output).string());
     entry["template_frame"] = frame;
     candidates.push_back(entry);
   }
@@ -122,7 +124,16 @@ int alignChoosingTemplate(const AlignSettings& settings,
     std::vector<AlignmentFigures> figures;
     for (const nlohmann::json& m : metrics) figures.push_back(alignmentFigures(m));
     const int kept = preferredAlignment(figures);
-    if (kept > 0) keepAlignment(candidateFolder(settings, further[kept - 1]), out);
+    if (kept > 0)
+    {
+      // The first alignment, made in OUT, gives way to the kept one and takes its folder.
+      const fs::path firstFolder =
+          candidateFolder(settings, metrics[0]["template_frame"].get<int>());
+      fs::create_directories(firstFolder);
+      keepAlignment(out, firstFolder);
+      writeTextAtomically((firstFolder / "metrics.json").string(), metrics[0].dump(2) + "\n");
+      keepAlignment(candidateFolder(settings, further[kept - 1]), out);
+    }
     nlohmann::json result = metrics[kept];
     result["template_choice"] = choiceSummary(settings, metrics, figures, kept);
     result["template_criterion"] = "alignment-figures";

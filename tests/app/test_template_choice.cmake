@@ -59,6 +59,20 @@ expect_files(${WORK}/out "align with two templates"
 if (kept EQUAL 1 AND EXISTS ${WORK}/out/templates/frame_${second}/aligned.pvd)
   message(FATAL_ERROR "the kept alignment was not moved out of templates/frame_${second}")
 endif ()
+# Each candidate's folder as listed holds its own alignment: the kept one in OUT, a first one
+# not kept in its own candidate folder.
+foreach (i 0 1)
+  read_json(folder ${metrics} template_choice candidates ${i} folder)
+  read_json(frame ${metrics} template_choice candidates ${i} template_frame)
+  read_json(listed_mean ${metrics} template_choice candidates ${i} mean_vertex_error_m)
+  read_json(folder_mean ${WORK}/out/${folder}/metrics.json mean_vertex_error_m)
+  read_json(folder_frame ${WORK}/out/${folder}/metrics.json template_frame)
+  if (NOT EXISTS ${WORK}/out/${folder}/aligned.pvd OR NOT folder_frame EQUAL frame
+      OR NOT folder_mean STREQUAL listed_mean OR (i EQUAL kept AND NOT folder STREQUAL "."))
+    message(FATAL_ERROR "candidate ${i} (frame ${frame}) is listed in '${folder}', which holds "
+      "frame ${folder_frame}'s alignment (${folder_mean} against ${listed_mean})")
+  endif ()
+endforeach ()
 file(STRINGS ${WORK}/out/report.html kept_line REGEX "Aligned under 2 template frames; kept: frame ${kept_frame}")
 if (NOT kept_line)
   message(FATAL_ERROR "the report does not show the template choice")
