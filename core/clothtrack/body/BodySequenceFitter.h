@@ -590,10 +590,10 @@ public:
   }
 
   /// Both legs started across the frame's two lowest detections that are not paired with the
-  /// head or a hand: the pelvis moved horizontally over their midpoint and each leg aimed at one
-  /// (both ways round), kept when it explains the frame better. A fit with both legs in one of
-  /// the frame's legs leaves the other empty, and a single leg aimed from a pelvis standing off
-  /// it crosses the gap between the frame's legs and is drawn back (BENCHMARKS.md).
+  /// head or a hand: the pelvis moved to stand between them (standAcross) and each leg aimed at
+  /// one (both ways round), kept when it explains the frame better. A fit with both legs in one
+  /// of the frame's legs leaves the other empty, and a single leg aimed from a pelvis standing
+  /// off it crosses the gap between the frame's legs and is drawn back (BENCHMARKS.md).
   void refitWithLegsAcross(const FrameSurface& frame, BodyFrameFit& fit)
   {
     const std::array<int, kNumExtremities> match = pairedExtremities(frame, fit.pose);
@@ -608,16 +608,64 @@ public:
               [&](int a, int b) { return frame.extremities[a].y() < frame.extremities[b].y(); });
     const Vec3 a = frame.extremities[feet[0]];
     const Vec3 b = frame.extremities[feet[1]];
-    BodyPose across = fit.pose;
-    Vec3 shift = 0.5 * (a + b) - samples_.jointTransforms(across)[Pelvis].topRightCorner<3, 1>();
-    shift.y() = 0.0;
-    across.translation += shift;
     for (int swapped = 0; swapped < 2; ++swapped)
     {
-      BodyPose start = across;
-      if (aimLimb(kLimbs[2], swapped ? b : a, start) && aimLimb(kLimbs[3], swapped ? a : b, start))
+      const Vec3& left = swapped ? b : a;
+      const Vec3& right = swapped ? a : b;
+      BodyPose start = fit.pose;
+      const std::array<Aim, 2> aims = {Aim{kLimbs[2].root, kLimbs[2].extremity, left},
+                                       Aim{kLimbs[3].root, kLimbs[3].extremity, right}};
+      if (!standAcross(start, aims)) continue;
+      if (aimLimb(kLimbs[2], left, start, kAcrossHipExtension) &&
+          aimLimb(kLimbs[3], right, start, kAcrossHipExtension))
         refitFrom(frame, start, fit);
     }
+  }
+
+  /// A limb's root (a hip) and extremity, and the point the extremity is aimed at.
+  struct Aim
+  {
+    Joint root;
+    int extremity;
+    Vec3 target;
+  };
+
+  /// Moves `pose` to stand as high as it can over the segment between the aims' targets with
+  /// each target within its limb's length of the limb's root (the pelvis moved along the feet's
+  /// segment, then up or down); false when no point of it has both within reach. A body left
+  /// with both legs in a kicked leg stands too high and too far forward for its other foot.
+  bool standAcross(BodyPose& pose, const std::array<Aim, 2>& aims) const
+  {
+    const std::vector<Eigen::Matrix4d> world = samples_.jointTransforms(pose);
+    const Vec3 pelvis = world[Pelvis].topRightCorner<3, 1>();
+    Vec3 along = aims[1].target - aims[0].target;
+    along.y() = 0.0;
+    Vec3 bestShift = Vec3::Zero();
+    double bestHeight = -std::numeric_limits<double>::infinity();
+    constexpr int kSteps = 20;
+    for (int step = 0; step <= kSteps; ++step)
+    {
+      Vec3 shift = aims[0].target + along * (static_cast<double>(step) / kSteps) - pelvis;
+      shift.y() = 0.0;
+      double rise = std::numeric_limits<double>::infinity();
+      for (const Aim& aim : aims)
+      {
+        const Vec3 root = world[aim.root].topRightCorner<3, 1>() + shift;
+        const double length = samples_.reach()[aim.extremity];
+        // Frames are read Y up.
+        const double across = std::hypot(root.x() - aim.target.x(), root.z() - aim.target.z());
+        rise = across < length
+                   ? std::min(rise, aim.target.y() + std::sqrt(length * length - across * across) -
+                                        root.y())
+                   : -std::numeric_limits<double>::infinity();
+      }
+      if (!(rise > bestHeight)) continue;
+      bestHeight = rise;
+      bestShift = shift + Vec3(0.0, rise, 0.0);
+    }
+    if (!std::isfinite(bestHeight)) return false;
+    pose.translation += bestShift;
+    return true;
   }
 
   /// Share of the arm samples (upper arms and forearms) lying more than kInsideTorso below the
@@ -846,7 +894,8 @@ private:
 
   /// Straightens `limb` below its root and turns the root so that the limb points at
   /// `target`; false when the target is out of the limb's reach.
-  bool aimLimb(const Limb& limb, const Vec3& target, BodyPose& pose) const
+  bool aimLimb(const Limb& limb, const Vec3& target, BodyPose& pose,
+               double largestHipExtension = kLargestHipExtension) const
   {
     for (Joint j : limb.below) pose.rotations.row(j).setZero();
     const std::vector<Eigen::Matrix4d> world = samples_.jointTransforms(pose);
@@ -862,7 +911,7 @@ private:
     pose.rotations.row(limb.root) =
         matrixToAxisAngle(parent.transpose() * turn * parent * own).transpose();
     // A leg aimed backwards lets a body facing the wrong way reach a foot kicked forward.
-    return limb.extremity < 3 || pose.rotations(limb.root, 0) <= kLargestHipExtension;
+    return limb.extremity < 3 || pose.rotations(limb.root, 0) <= largestHipExtension;
   }
   /// Depth (m) below the torso's surface from which an arm sample counts as inside it.
   static constexpr double kInsideTorso = 0.02;
@@ -870,6 +919,10 @@ private:
   static constexpr double kArmsCrossedShare = 0.1;
   /// Hip extension (radians, a positive rotation about X) beyond which a leg is not aimed.
   static constexpr double kLargestHipExtension = 0.6;
+  /// The same when both legs are aimed across the frame's feet, each at its own: the leg
+  /// standing behind a kick extends further (up to 0.73 radians on the kicks of random
+  /// collection 11, from a pelvis tilted by the fit that left both legs in the kicked one).
+  static constexpr double kAcrossHipExtension = 1.2;
   /// A limb is aimed only at a detection within this multiple of its length (plus 3 cm, as
   /// matchExtremities allows) from its root.
   static constexpr double kAimReach = 1.2;
