@@ -398,11 +398,13 @@ void tryRaisedLegs(SequenceFitter& fitter, const FrameSurface& frame,
   }
 }
 
-/// How many of the frames `own` have a poor fit.
-long poorFits(const std::vector<int>& own, const std::vector<BodyFrameFit>& fits)
+/// The units planned for restarting the poor fits of the frames `own`: one restart at least, so
+/// that the progress does not reach its end before the restarts run.
+double poorFitRestartUnits(const std::vector<int>& own, const std::vector<BodyFrameFit>& fits)
 {
-  return std::count_if(own.begin(), own.end(),
-                       [&](int i) { return fits[i].status == BodyFitStatus::Poor; });
+  const auto poor = std::count_if(own.begin(), own.end(),
+                                  [&](int i) { return fits[i].status == BodyFitStatus::Poor; });
+  return kRestartUnits * static_cast<double>(std::max<decltype(poor)>(1, poor));
 }
 
 /// Whether usable frame k was fitted as an unrelated pose: it does not continue its predecessor,
@@ -440,7 +442,7 @@ void turnRoundWorstUnrelated(SequenceFitter& fitter, FrameSurfaces& surfaces,
   const double limit = options.turnRoundRatio * upperMedian(scores);
   const auto turned =
       std::count_if(scores.begin(), scores.end(), [&](double score) { return score > limit; });
-  progress.replan(kRestartUnits * static_cast<double>(turned + std::max(1L, poorFits(own, fits))));
+  progress.replan(kRestartUnits * static_cast<double>(turned) + poorFitRestartUnits(own, fits));
   for (size_t u = 0; u < unrelated.size(); ++u)
   {
     if (!(scores[u] > limit)) continue;
@@ -532,7 +534,7 @@ void recoverPoorFits(SequenceFitter& fitter, FrameSurfaces& surfaces,
                      std::vector<BodyFrameFit>& fits, FitProgress& progress)
 {
   const std::vector<BodyPose> poses = okPoses(usable, -1, fits);
-  progress.replan(kRestartUnits * static_cast<double>(poorFits(own, fits)));
+  progress.replan(poorFitRestartUnits(own, fits));
   for (int i : own)
   {
     if (fits[i].status != BodyFitStatus::Poor) continue;
@@ -694,10 +696,8 @@ BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
   fitter.setReachTolerance(options.shapeReachTolerance);
   firstPass(fitter, surfaces, segment.forward, options, result.frames, fitProgress);
   share(result.frames);
-  // The first pass's poor fits foretell the end steps' restarts; one at least is planned, so
-  // that the progress does not reach its end before they run.
-  fitProgress.replan(laterPasses + kRestartUnits * static_cast<double>(std::max(
-                                                       1L, poorFits(segment.own, result.frames))));
+  // The first pass's poor fits foretell the end steps' restarts.
+  fitProgress.replan(laterPasses + poorFitRestartUnits(segment.own, result.frames));
   std::vector<Eigen::VectorXd> betas =
       fitShapes(model, fitter, surfaces, usable, options, result.frames, fitProgress);
   if (shared) shareShapes(sharing, betas);

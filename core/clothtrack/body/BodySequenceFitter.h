@@ -622,52 +622,6 @@ public:
     }
   }
 
-  /// A limb's root (a hip) and extremity, and the point the extremity is aimed at.
-  struct Aim
-  {
-    Joint root;
-    int extremity;
-    Vec3 target;
-  };
-
-  /// Moves `pose` to stand as high as it can over the segment between the aims' targets with
-  /// each target within its limb's length of the limb's root (the pelvis moved along the feet's
-  /// segment, then up or down); false when no point of it has both within reach. A body left
-  /// with both legs in a kicked leg stands too high and too far forward for its other foot.
-  bool standAcross(BodyPose& pose, const std::array<Aim, 2>& aims) const
-  {
-    const std::vector<Eigen::Matrix4d> world = samples_.jointTransforms(pose);
-    const Vec3 pelvis = world[Pelvis].topRightCorner<3, 1>();
-    Vec3 along = aims[1].target - aims[0].target;
-    along.y() = 0.0;
-    Vec3 bestShift = Vec3::Zero();
-    double bestHeight = -std::numeric_limits<double>::infinity();
-    constexpr int kSteps = 20;
-    for (int step = 0; step <= kSteps; ++step)
-    {
-      Vec3 shift = aims[0].target + along * (static_cast<double>(step) / kSteps) - pelvis;
-      shift.y() = 0.0;
-      double rise = std::numeric_limits<double>::infinity();
-      for (const Aim& aim : aims)
-      {
-        const Vec3 root = world[aim.root].topRightCorner<3, 1>() + shift;
-        const double length = samples_.reach()[aim.extremity];
-        // Frames are read Y up.
-        const double across = std::hypot(root.x() - aim.target.x(), root.z() - aim.target.z());
-        rise = across < length
-                   ? std::min(rise, aim.target.y() + std::sqrt(length * length - across * across) -
-                                        root.y())
-                   : -std::numeric_limits<double>::infinity();
-      }
-      if (!(rise > bestHeight)) continue;
-      bestHeight = rise;
-      bestShift = shift + Vec3(0.0, rise, 0.0);
-    }
-    if (!std::isfinite(bestHeight)) return false;
-    pose.translation += bestShift;
-    return true;
-  }
-
   /// Share of the arm samples (upper arms and forearms) lying more than kInsideTorso below the
   /// surface at their nearest torso sample: arms that cross through the chest to the other
   /// side's hands. An unclothed frame is explained about as closely by them as by arms that do
@@ -892,6 +846,52 @@ private:
     return match;
   }
 
+  /// A limb's root (a hip) and extremity, and the point the extremity is aimed at.
+  struct Aim
+  {
+    Joint root;
+    int extremity;
+    Vec3 target;
+  };
+
+  /// Moves `pose` to stand as high as it can over the segment between the aims' targets with
+  /// each target within its limb's length of the limb's root (the pelvis moved along the feet's
+  /// segment, then up or down); false when no point of it has both within reach. A body left
+  /// with both legs in a kicked leg stands too high and too far forward for its other foot.
+  bool standAcross(BodyPose& pose, const std::array<Aim, 2>& aims) const
+  {
+    const std::vector<Eigen::Matrix4d> world = samples_.jointTransforms(pose);
+    const Vec3 pelvis = world[Pelvis].topRightCorner<3, 1>();
+    Vec3 along = aims[1].target - aims[0].target;
+    along.y() = 0.0;
+    Vec3 bestShift = Vec3::Zero();
+    double bestRise = -std::numeric_limits<double>::infinity();
+    constexpr int kSteps = 20;
+    for (int step = 0; step <= kSteps; ++step)
+    {
+      Vec3 shift = aims[0].target + along * (static_cast<double>(step) / kSteps) - pelvis;
+      shift.y() = 0.0;
+      double rise = std::numeric_limits<double>::infinity();
+      for (const Aim& aim : aims)
+      {
+        const Vec3 root = world[aim.root].topRightCorner<3, 1>() + shift;
+        const double length = samples_.reach()[aim.extremity];
+        // Frames are read Y up.
+        const double across = std::hypot(root.x() - aim.target.x(), root.z() - aim.target.z());
+        rise = across < length
+                   ? std::min(rise, aim.target.y() + std::sqrt(length * length - across * across) -
+                                        root.y())
+                   : -std::numeric_limits<double>::infinity();
+      }
+      if (!(rise > bestRise)) continue;
+      bestRise = rise;
+      bestShift = shift + Vec3(0.0, rise, 0.0);
+    }
+    if (!std::isfinite(bestRise)) return false;
+    pose.translation += bestShift;
+    return true;
+  }
+
   /// Straightens `limb` below its root and turns the root so that the limb points at
   /// `target`; false when the target is out of the limb's reach.
   bool aimLimb(const Limb& limb, const Vec3& target, BodyPose& pose,
@@ -920,7 +920,7 @@ private:
   /// Hip extension (radians, a positive rotation about X) beyond which a leg is not aimed.
   static constexpr double kLargestHipExtension = 0.6;
   /// The same when both legs are aimed across the frame's feet, each at its own: the leg
-  /// standing behind a kick extends further (up to 0.73 radians on the kicks of random
+  /// standing behind a kick extends further (up to 0.71 radians on the kicks of random
   /// collection 11, from a pelvis tilted by the fit that left both legs in the kicked one).
   static constexpr double kAcrossHipExtension = 1.2;
   /// A limb is aimed only at a detection within this multiple of its length (plus 3 cm, as
