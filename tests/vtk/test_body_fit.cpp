@@ -1114,3 +1114,38 @@ TEST(BodyFit, TurnsRoundAFitWhoseLimbRestartsCreepIntoTheTorso)
   EXPECT_LT(fit.frameDistance, distanceBefore);
   EXPECT_LE(arms, 0.1);
 }
+
+TEST(BodyFit, KeepsLimbRestartsToTheArmsOfAReference)
+{
+  // A frame whose arms swing in through the chest (0.20 of the arm samples inside the torso),
+  // and a fit whose arms are a little less far in (0.09). Each limb restart is refused only when
+  // its arms go kArmsCrossedShare (0.1) further in than the fit it would replace, so a restart
+  // that settles in the frame's arms is kept. Given a reference (refitTurnedRound passes the
+  // arms of the fit its turned body would replace), no restart may go that far beyond it.
+  BodyPose truth;
+  truth.rotations.row(LeftShoulder) << 0.0, 0.0, -0.9;
+  truth.rotations.row(RightShoulder) << 0.0, 0.0, 0.9;
+  truth.rotations.row(LeftElbow) << -0.6, 0.0, 0.0;
+  const Sequence frame = unclothedPoses({truth});
+  BodyFitOptions options;
+  bodyfit::SequenceFitter fitter(builtinBodyModel(), options);
+  fitter.samples().setShape(frame.beta);
+  const bodyfit::FrameSurface surface(frame.captures[0], options.extremityPersistence, nullptr);
+  BodyPose current = truth;
+  current.rotations.row(LeftShoulder) << 0.0, 0.0, -0.8;
+  current.rotations.row(RightShoulder) << 0.0, 0.0, 0.8;
+  BodyFrameFit free, held;
+  free.pose = held.pose = current;
+  fitter.refitLimbs(surface, free);
+  fitter.refitLimbs(surface, held, /*armsReference=*/0.0);
+  const double start = fitter.armsInsideTorso(current),
+               freeArms = fitter.armsInsideTorso(free.pose),
+               heldArms = fitter.armsInsideTorso(held.pose);
+  std::printf("[ measured ] arm samples inside the torso: frame %.3f, start %.3f; limb restarts "
+              "%.3f, and %.3f measured against a reference of none\n",
+              fitter.armsInsideTorso(truth), start, freeArms, heldArms);
+  ASSERT_GT(start, 0.05);
+  ASSERT_LT(start, 0.1);
+  EXPECT_GT(freeArms, 0.1) << "a restart into the frame's arms should be kept without a reference";
+  EXPECT_LE(heldArms, 0.1);
+}
