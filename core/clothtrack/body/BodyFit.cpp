@@ -462,6 +462,11 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
                FitProgress& progress)
 {
   const std::vector<BodyFitStage> finalStages(options.stages.end() - 1, options.stages.end());
+  // Only here, under the final shape: arms let out in the first pass move the shape, and with
+  // it the template frame (BENCHMARKS.md, "Tried, not kept: arms let out of the torso at a
+  // higher score").
+  ArmsRule armsLetOut;
+  armsLetOut.letOut = true;
   const BodyPose* previous = nullptr;
   for (size_t k = 0; k < usable.size(); ++k)
   {
@@ -475,7 +480,7 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
                                 /*coverAsMuch=*/false);
     tryRaisedLegs(fitter, surfaces.get(i), finalStages, options.legRaiseStart, fit);
     if (options.limbRestarts && unrelatedFrame(usable, k, fits))
-      fitter.refitLimbs(surfaces.get(i), fit);
+      fitter.refitLimbs(surfaces.get(i), fit, armsLetOut);
     if (fit.status == BodyFitStatus::Poor && fit.message.empty()) fit.message = "poor fit";
     previous = &fit.pose;
     surfaces.release(i);

@@ -16,6 +16,21 @@
 
 namespace clothtrack::bodyfit
 {
+/// How a limb restart's arms inside the torso are judged against the fit it would replace
+/// (SequenceFitter::explainsBetter; the constants are SequenceFitter's).
+struct ArmsRule
+{
+  /// A share of the arm samples inside the torso that no restart may exceed by more than
+  /// kArmsCrossedShare, whatever the current fit's (refitTurnedRound: the backward fit's).
+  double reference = std::numeric_limits<double>::infinity();
+  /// A restart that takes the arms out of the chest (the current fit has at least
+  /// kArmsThroughChest of the arm samples inside the torso, the restart kArmsOutShare fewer) is
+  /// kept up to kArmsOutScoreRatio times the current score: on an unclothed frame, arms swung
+  /// through the chest can explain forearms folded in front of it more closely than a fit of
+  /// the folded forearms does (used in the final pass, BodyFit.cpp).
+  bool letOut = false;
+};
+
 class SequenceFitter
 {
 public:
@@ -574,7 +589,9 @@ public:
       // Its limb restarts keep to the arms of the fit it would replace: each may push the arms
       // a little further into the torso than the one before, together past what adopting it
       // allows (collection seed 12's frame 18: 0.019, then 0.102 of them, against none).
-      refitLimbs(frame, turned, armsInsideTorso(fit.pose));
+      ArmsRule arms;
+      arms.reference = armsInsideTorso(fit.pose);
+      refitLimbs(frame, turned, arms);
       if (explainsBetter(frame, turned.pose, fit.pose)) adopt(frame, turned, fit);
     }
   }
@@ -585,14 +602,12 @@ public:
   /// temporal prior and kept if it explains the frame better by twoSidedScore. Extremities are
   /// paired by proximity, so a fit whose arms crossed to the other side's hands keeps them
   /// crossed, and a leg kicked out lies beyond the pairing gate of a foot hanging down.
-  /// `armsReference`: a share of the arms inside the torso that no restart may exceed by more
-  /// than kArmsCrossedShare, whatever the current fit's (explainsBetter).
-  void refitLimbs(const FrameSurface& frame, BodyFrameFit& fit,
-                  double armsReference = std::numeric_limits<double>::infinity())
+  /// `arms`: how a restart's arms inside the torso are judged (explainsBetter).
+  void refitLimbs(const FrameSurface& frame, BodyFrameFit& fit, const ArmsRule& arms = {})
   {
-    refitWithLimbsAtRest(frame, fit, armsReference);
-    refitWithLimbsAimed(frame, fit, armsReference);
-    refitWithPairsSwapped(frame, fit, armsReference);
+    refitWithLimbsAtRest(frame, fit, arms);
+    refitWithLimbsAimed(frame, fit, arms);
+    refitWithPairsSwapped(frame, fit, arms);
   }
 
   /// Both legs started across the frame's two lowest detections that are not paired with the
@@ -772,27 +787,32 @@ private:
   /// `start` fitted fully without a temporal prior; replaces `fit` if it explains the frame
   /// better (explainsBetter).
   void refitFrom(const FrameSurface& frame, const BodyPose& start, BodyFrameFit& fit,
-                 double armsReference = std::numeric_limits<double>::infinity())
+                 const ArmsRule& arms = {})
   {
     BodyFrameFit other;
     other.pose = start;
     other.energy = fitPose(frame, other.pose, nullptr, options_.stages, options_.extremityGate,
                            &other.extremitiesMatched);
-    if (explainsBetter(frame, other.pose, fit.pose, armsReference)) adopt(frame, other, fit);
+    if (explainsBetter(frame, other.pose, fit.pose, arms)) adopt(frame, other, fit);
   }
 
   /// A restart's fit replaces the current one when its two-sided score is lower, unless its arms
   /// go through the torso where the current ones do not (kArmsCrossedShare more of their
-  /// samples inside it than in `current` or than `armsReference`, whichever is fewer).
+  /// samples inside it than in `current` or than `arms.reference`, whichever is fewer). With
+  /// `arms.letOut`, a candidate that takes arms out of the chest may score up to
+  /// kArmsOutScoreRatio times the current fit (ArmsRule).
   bool explainsBetter(const FrameSurface& frame, const BodyPose& candidate, const BodyPose& current,
-                      double armsReference = std::numeric_limits<double>::infinity()) const
+                      const ArmsRule& arms = {}) const
   {
-    const double arms = std::min(armsInsideTorso(current), armsReference);
-    if (armsInsideTorso(candidate) - arms > kArmsCrossedShare) return false;
-    return twoSidedScore(frame, candidate) < twoSidedScore(frame, current);
+    const double currentArms = armsInsideTorso(current), candidateArms = armsInsideTorso(candidate);
+    if (candidateArms - std::min(currentArms, arms.reference) > kArmsCrossedShare) return false;
+    const bool armsComeOut = arms.letOut && currentArms >= kArmsThroughChest &&
+                             currentArms - candidateArms >= kArmsOutShare;
+    return twoSidedScore(frame, candidate) <
+           (armsComeOut ? kArmsOutScoreRatio : 1.0) * twoSidedScore(frame, current);
   }
 
-  void refitWithLimbsAtRest(const FrameSurface& frame, BodyFrameFit& fit, double armsReference)
+  void refitWithLimbsAtRest(const FrameSurface& frame, BodyFrameFit& fit, const ArmsRule& arms)
   {
     // Each arm with its clavicle, both arms together (crossed arms swap both), each leg.
     const std::array<std::vector<int>, 5> groups = {{{0}, {1}, {0, 1}, {2}, {3}}};
@@ -806,11 +826,11 @@ private:
         for (Joint j : limb.below) start.rotations.row(j).setZero();
         if (l < 2) start.rotations.row(jointParents()[limb.root]).setZero(); // the clavicle
       }
-      refitFrom(frame, start, fit, armsReference);
+      refitFrom(frame, start, fit, arms);
     }
   }
 
-  void refitWithLimbsAimed(const FrameSurface& frame, BodyFrameFit& fit, double armsReference)
+  void refitWithLimbsAimed(const FrameSurface& frame, BodyFrameFit& fit, const ArmsRule& arms)
   {
     const std::array<int, kNumExtremities> match = pairedExtremities(frame, fit.pose);
     for (size_t d = 0; d < frame.extremities.size(); ++d)
@@ -819,7 +839,7 @@ private:
       for (const Limb& limb : kLimbs)
       {
         BodyPose start = fit.pose;
-        if (aimLimb(limb, frame.extremities[d], start)) refitFrom(frame, start, fit, armsReference);
+        if (aimLimb(limb, frame.extremities[d], start)) refitFrom(frame, start, fit, arms);
       }
     }
   }
@@ -827,7 +847,7 @@ private:
   /// Both arms, then both legs, aimed each at the extremity its partner is paired with: a pair
   /// that crossed through the body to the other side's hands or feet stays paired by proximity,
   /// so neither limb is free for the aimed restarts.
-  void refitWithPairsSwapped(const FrameSurface& frame, BodyFrameFit& fit, double armsReference)
+  void refitWithPairsSwapped(const FrameSurface& frame, BodyFrameFit& fit, const ArmsRule& arms)
   {
     for (int first : {0, 2})
     {
@@ -838,7 +858,7 @@ private:
       BodyPose start = fit.pose;
       if (aimLimb(a, frame.extremities[match[b.extremity]], start) &&
           aimLimb(b, frame.extremities[match[a.extremity]], start))
-        refitFrom(frame, start, fit, armsReference);
+        refitFrom(frame, start, fit, arms);
     }
   }
 
@@ -925,6 +945,12 @@ private:
   static constexpr double kInsideTorso = 0.02;
   /// Change in the share of arm samples inside the torso that tells crossed arms from others.
   static constexpr double kArmsCrossedShare = 0.1;
+  /// ArmsRule::letOut: the share of arm samples inside the torso from which arms go through the
+  /// chest (fits of poses that are right reach 0.25), the fewer a restart must have, and the
+  /// score it may then reach against the current fit's.
+  static constexpr double kArmsThroughChest = 0.3;
+  static constexpr double kArmsOutShare = 0.2;
+  static constexpr double kArmsOutScoreRatio = 1.25;
   /// Hip extension (radians, a positive rotation about X) beyond which a leg is not aimed.
   static constexpr double kLargestHipExtension = 0.6;
   /// The same when both legs are aimed across the frame's feet, each at its own: the leg
