@@ -480,7 +480,10 @@ void finalPass(SequenceFitter& fitter, FrameSurfaces& surfaces, const std::vecto
                                 /*coverAsMuch=*/false);
     tryRaisedLegs(fitter, surfaces.get(i), finalStages, options.legRaiseStart, fit);
     if (options.limbRestarts && unrelatedFrame(usable, k, fits))
+    {
       fitter.refitLimbs(surfaces.get(i), fit, armsLetOut);
+      fitter.refitWithUpperBodyAtRest(surfaces.get(i), fit, armsLetOut);
+    }
     if (fit.status == BodyFitStatus::Poor && fit.message.empty()) fit.message = "poor fit";
     previous = &fit.pose;
     surfaces.release(i);
