@@ -1057,6 +1057,45 @@ BodyPose poseFromRows(const double (&rows)[NumJoints][3], const Vec3& translatio
   return pose;
 }
 
+/// A frame of a random MakeHuman collection (bench/unclothed_collection.py) rebuilt from its
+/// truth: the MakeHuman body in the truth's shape and pose, and the built-in body's fitter under
+/// the shape the collection's fit settled on.
+struct RebuiltCollectionFrame
+{
+  RebuiltCollectionFrame(const std::string& assets, const BodyPose& truth,
+                         const Eigen::VectorXd& personShape, const Eigen::VectorXd& fittedShape)
+      : person(importMakeHuman(assets, MakeHumanImportOptions())),
+        capture(person.posed(personShape, truth)),
+        truthJoints(person.posedJoints(personShape, truth)), fittedShape(fittedShape),
+        fitter(builtinBodyModel(), options), surface(capture, options.extremityPersistence, nullptr)
+  {
+    fitter.samples().setShape(fittedShape);
+  }
+
+  BodyFrameFit fitFrom(const BodyPose& start)
+  {
+    BodyFrameFit fit;
+    fitter.fitFrame(surface, start, nullptr, options.stages, fit);
+    return fit;
+  }
+
+  /// Distance of the farther of the body's wrists in `pose` from the truth's.
+  double fartherWristError(const BodyPose& pose) const
+  {
+    const Points joints = builtinBodyModel().posedJoints(fittedShape, pose);
+    return std::max((joints.row(LeftWrist) - truthJoints.row(LeftWrist)).norm(),
+                    (joints.row(RightWrist) - truthJoints.row(RightWrist)).norm());
+  }
+
+  BodyModel person;
+  TriangleMesh capture;
+  Points truthJoints;
+  Eigen::VectorXd fittedShape;
+  BodyFitOptions options;
+  bodyfit::SequenceFitter fitter;
+  bodyfit::FrameSurface surface;
+};
+
 TEST(BodyFit, TurnsRoundAFitWhoseLimbRestartsCreepIntoTheTorso)
 {
   // Collection seed 12's frame 18 (bench/unclothed_collection.py, random poses): the MakeHuman
@@ -1086,24 +1125,18 @@ TEST(BodyFit, TurnsRoundAFitWhoseLimbRestartsCreepIntoTheTorso)
   const BodyPose truth = poseFromRows(truthRows, Vec3(-0.367, 0.0, 0.386));
   Eigen::VectorXd personShape(4);
   personShape << 0.641, 1.505, -0.096, 1.069;
-  const TriangleMesh capture =
-      importMakeHuman(assets, MakeHumanImportOptions()).posed(personShape, truth);
   // The body-model shape the collection's fit settled on.
   Eigen::VectorXd fittedShape(16);
   fittedShape << -1.523, 2.924, 0.836, 0.427, 0.297, 0.179, -0.270, 0.923, -0.389, 0.339, 0.253,
       0.191, 0.105, 0.089, -0.265, -0.058;
-  BodyFitOptions options;
-  bodyfit::SequenceFitter fitter(builtinBodyModel(), options);
-  fitter.samples().setShape(fittedShape);
-  const bodyfit::FrameSurface surface(capture, options.extremityPersistence, nullptr);
-  BodyFrameFit fit;
-  fitter.fitFrame(surface, poseFromRows(backwardsRows, Vec3(-0.407, -0.048, 0.414)), nullptr,
-                  options.stages, fit);
+  RebuiltCollectionFrame frame(assets, truth, personShape, fittedShape);
+  bodyfit::SequenceFitter& fitter = frame.fitter;
+  BodyFrameFit fit = frame.fitFrom(poseFromRows(backwardsRows, Vec3(-0.407, -0.048, 0.414)));
   const double before = bodyfit::headingChange(fit.pose, truth, Vec3::UnitY());
   const double distanceBefore = fit.frameDistance;
   ASSERT_GT(before, M_PI / 2) << "the start should settle facing backwards";
   ASSERT_LT(fitter.armsInsideTorso(fit.pose), 0.01);
-  fitter.refitTurnedRound(surface, fit);
+  fitter.refitTurnedRound(frame.surface, fit);
   const double after = bodyfit::headingChange(fit.pose, truth, Vec3::UnitY());
   const double arms = fitter.armsInsideTorso(fit.pose);
   std::printf("[ measured ] limb restarts after a half turn: %.1f then %.1f degrees off, frame to "
@@ -1182,33 +1215,22 @@ TEST(BodyFit, LetsArmsSwungThroughTheChestOutInTheFinalPass)
   const BodyPose truth = poseFromRows(truthRows, Vec3(-0.193, 0.0, -0.283));
   Eigen::VectorXd personShape(4);
   personShape << 0.471, -0.827, -0.485, -0.028;
-  const BodyModel person = importMakeHuman(assets, MakeHumanImportOptions());
-  const TriangleMesh capture = person.posed(personShape, truth);
-  const Points truthJoints = person.posedJoints(personShape, truth);
   // The body-model shape the collection's fit settled on.
   Eigen::VectorXd fittedShape(16);
   fittedShape << -1.223, 2.579, -0.559, 0.299, -0.024, -0.144, 0.168, -0.012, -0.218, 0.386, 0.212,
       0.054, -0.019, 0.127, -0.076, -0.045;
-  BodyFitOptions options;
-  bodyfit::SequenceFitter fitter(builtinBodyModel(), options);
-  fitter.samples().setShape(fittedShape);
-  const bodyfit::FrameSurface surface(capture, options.extremityPersistence, nullptr);
-  BodyFrameFit crossed;
-  fitter.fitFrame(surface, poseFromRows(crossedRows, Vec3(-0.172, -0.015, -0.257)), nullptr,
-                  options.stages, crossed);
-  auto wristErrors = [&](const BodyPose& pose)
-  {
-    const Points joints = builtinBodyModel().posedJoints(fittedShape, pose);
-    return std::max((joints.row(LeftWrist) - truthJoints.row(LeftWrist)).norm(),
-                    (joints.row(RightWrist) - truthJoints.row(RightWrist)).norm());
-  };
+  RebuiltCollectionFrame frame(assets, truth, personShape, fittedShape);
+  bodyfit::SequenceFitter& fitter = frame.fitter;
+  const BodyFrameFit crossed =
+      frame.fitFrom(poseFromRows(crossedRows, Vec3(-0.172, -0.015, -0.257)));
+  auto wristErrors = [&](const BodyPose& pose) { return frame.fartherWristError(pose); };
   ASSERT_GT(fitter.armsInsideTorso(crossed.pose), 0.3) << "the start should settle crossed";
   ASSERT_GT(wristErrors(crossed.pose), 0.3);
   BodyFrameFit held = crossed, letOut = crossed;
-  fitter.refitLimbs(surface, held);
+  fitter.refitLimbs(frame.surface, held);
   bodyfit::ArmsRule finalPass;
   finalPass.letOut = true;
-  fitter.refitLimbs(surface, letOut, finalPass);
+  fitter.refitLimbs(frame.surface, letOut, finalPass);
   std::printf("[ measured ] arms swung through the chest: arm samples inside the torso %.3f, the "
               "farther wrist %.1f cm from the truth's; limb restarts %.3f, %.1f cm; arms let out "
               "%.3f, %.1f cm\n",
@@ -1251,26 +1273,15 @@ TEST(BodyFit, StartsTheUpperBodyAgainInTheFinalPass)
   const BodyPose truth = poseFromRows(truthRows, Vec3(0.354, 0.0, -0.236));
   Eigen::VectorXd personShape(4);
   personShape << 0.498, 0.231, 1.359, 0.018;
-  const BodyModel person = importMakeHuman(assets, MakeHumanImportOptions());
-  const TriangleMesh capture = person.posed(personShape, truth);
-  const Points truthJoints = person.posedJoints(personShape, truth);
   // The body-model shape the collection's fit settled on.
   Eigen::VectorXd fittedShape(16);
   fittedShape << -1.010, 2.292, -0.602, 0.705, -0.042, 0.156, -0.226, 1.423, -0.143, 0.349, 0.288,
       0.122, 0.205, 0.057, -0.455, -0.159;
-  BodyFitOptions options;
-  bodyfit::SequenceFitter fitter(builtinBodyModel(), options);
-  fitter.samples().setShape(fittedShape);
-  const bodyfit::FrameSurface surface(capture, options.extremityPersistence, nullptr);
-  BodyFrameFit fit;
-  fitter.fitFrame(surface, poseFromRows(swappedRows, Vec3(0.372, -0.019, -0.216)), nullptr,
-                  options.stages, fit);
-  auto wristErrors = [&](const BodyPose& pose)
-  {
-    const Points joints = builtinBodyModel().posedJoints(fittedShape, pose);
-    return std::max((joints.row(LeftWrist) - truthJoints.row(LeftWrist)).norm(),
-                    (joints.row(RightWrist) - truthJoints.row(RightWrist)).norm());
-  };
+  RebuiltCollectionFrame frame(assets, truth, personShape, fittedShape);
+  bodyfit::SequenceFitter& fitter = frame.fitter;
+  const bodyfit::FrameSurface& surface = frame.surface;
+  BodyFrameFit fit = frame.fitFrom(poseFromRows(swappedRows, Vec3(0.372, -0.019, -0.216)));
+  auto wristErrors = [&](const BodyPose& pose) { return frame.fartherWristError(pose); };
   bodyfit::ArmsRule finalPass;
   finalPass.letOut = true;
   fitter.refitLimbs(surface, fit, finalPass);
