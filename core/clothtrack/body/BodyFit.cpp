@@ -171,6 +171,12 @@ private:
 /// restarts took 4.6 s, 0.28 s a unit of its passes.
 constexpr double kRestartUnits = 3.0;
 
+/// Peers whose joints restartFromPeers tries on each unrelated frame, and that step's work per
+/// frame in units of a pass's frame (a brief fit from each peer, then one full fit): on collection
+/// seed 13 it took 11.8 s for 20 frames, about two units each.
+constexpr size_t kMostPeers = 24;
+constexpr double kPeerRestartUnits = 2.0;
+
 /// Indices of the frames that can be fitted at all; the others are marked failed.
 std::vector<int> usableFrames(const FrameSource& frames, std::vector<BodyFrameFit>& fits)
 {
@@ -416,6 +422,25 @@ bool unrelatedFrame(const std::vector<int>& usable, size_t k, const std::vector<
   return k == 0 && k + 1 < usable.size() && !fits[usable[k + 1]].continuesPrevious;
 }
 
+/// The usable frames fitted as unrelated poses (unrelatedFrame).
+std::vector<int> unrelatedFrames(const std::vector<int>& usable,
+                                 const std::vector<BodyFrameFit>& fits)
+{
+  std::vector<int> unrelated;
+  for (size_t k = 0; k < usable.size(); ++k)
+    if (unrelatedFrame(usable, k, fits)) unrelated.push_back(usable[k]);
+  return unrelated;
+}
+
+/// Those of `frames` that are among `own`, in the order of `frames`.
+std::vector<int> ownedFrames(const std::vector<int>& frames, const std::vector<int>& own)
+{
+  std::vector<int> owned;
+  for (int i : frames)
+    if (std::find(own.begin(), own.end(), i) != own.end()) owned.push_back(i);
+  return owned;
+}
+
 /// The fits of unrelated frames (of `own`) that explain their frame worst, turned half round
 /// (SequenceFitter::refitTurnedRound): those whose two-sided score exceeds
 /// BodyFitOptions::turnRoundRatio times the median of the unrelated frames'. A body left facing
@@ -427,14 +452,10 @@ void turnRoundWorstUnrelated(SequenceFitter& fitter, FrameSurfaces& surfaces,
                              const BodyFitOptions& options, std::vector<BodyFrameFit>& fits,
                              FitProgress& progress)
 {
-  std::vector<int> unrelated;
+  const std::vector<int> unrelated = ownedFrames(unrelatedFrames(usable, fits), own);
   std::vector<double> scores;
-  for (size_t k = 0; k < usable.size(); ++k)
+  for (int i : unrelated)
   {
-    const int i = usable[k];
-    if (!unrelatedFrame(usable, k, fits) || std::find(own.begin(), own.end(), i) == own.end())
-      continue;
-    unrelated.push_back(i);
     scores.push_back(fitter.twoSidedScore(surfaces.get(i), fits[i].pose));
     surfaces.release(i);
   }
@@ -442,13 +463,48 @@ void turnRoundWorstUnrelated(SequenceFitter& fitter, FrameSurfaces& surfaces,
   const double limit = options.turnRoundRatio * upperMedian(scores);
   const auto turned =
       std::count_if(scores.begin(), scores.end(), [&](double score) { return score > limit; });
-  progress.replan(kRestartUnits * static_cast<double>(turned) + poorFitRestartUnits(own, fits));
+  // The peers' restarts (restartFromPeers) follow, on the same frames.
+  progress.replan(kRestartUnits * static_cast<double>(turned) +
+                  kPeerRestartUnits * static_cast<double>(unrelated.size()) +
+                  poorFitRestartUnits(own, fits));
   for (size_t u = 0; u < unrelated.size(); ++u)
   {
     if (!(scores[u] > limit)) continue;
     fitter.refitTurnedRound(surfaces.get(unrelated[u]), fits[unrelated[u]]);
     surfaces.release(unrelated[u]);
     progress.advance(kRestartUnits);
+  }
+}
+
+/// Every unrelated frame of `own` started again from the joints of the other unrelated frames'
+/// fits (SequenceFitter::refitFromPeerJoints), up to kMostPeers of them spread over the
+/// sequence. Only where at least three frames are unrelated (a collection of poses); a sequence
+/// whose frames continue each other has none.
+void restartFromPeers(SequenceFitter& fitter, FrameSurfaces& surfaces,
+                      const std::vector<int>& usable, const std::vector<int>& own,
+                      std::vector<BodyFrameFit>& fits, FitProgress& progress)
+{
+  const std::vector<int> unrelated = unrelatedFrames(usable, fits);
+  if (unrelated.size() < 3) return;
+  const std::vector<int> mine = ownedFrames(unrelated, own);
+  progress.replan(kPeerRestartUnits * static_cast<double>(mine.size()) +
+                  poorFitRestartUnits(own, fits));
+  // The peers as they were before any is restarted, so that the order does not matter.
+  std::vector<BodyPose> poses;
+  for (int i : unrelated) poses.push_back(fits[i].pose);
+  for (int i : mine)
+  {
+    std::vector<BodyPose> peers;
+    const size_t others = unrelated.size() - 1, count = std::min(others, kMostPeers);
+    for (size_t m = 0; m < count; ++m)
+    {
+      size_t u = m * others / count;
+      if (unrelated[u] >= i) ++u; // skip the frame itself
+      peers.push_back(poses[u]);
+    }
+    fitter.refitFromPeerJoints(surfaces.get(i), peers, fits[i]);
+    surfaces.release(i);
+    progress.advance(kPeerRestartUnits);
   }
 }
 
@@ -717,6 +773,8 @@ BodyFitResult fitBodySequence(const BodyModel& model, const FrameSource& frames,
   {
     turnRoundWorstUnrelated(fitter, surfaces, usable, segment.own, options, result.frames,
                             fitProgress);
+    share(result.frames);
+    restartFromPeers(fitter, surfaces, usable, segment.own, result.frames, fitProgress);
     share(result.frames);
   }
   const double limit = unexplainedLimit(options, result.frames);

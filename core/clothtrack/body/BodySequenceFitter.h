@@ -324,6 +324,26 @@ public:
     return {{1.0, 0.1, 0.0, 4, 0.4}, {0.3, 1.0, 1.0, 4, 0.15}};
   }
 
+  /// Of `starts` (not empty), the one that explains the frame best (twoSidedScore) once each is
+  /// briefly fitted (quickStages).
+  BodyPose bestQuickFit(const FrameSurface& frame, const std::vector<BodyPose>& starts)
+  {
+    const std::vector<BodyFitStage> quick = quickStages();
+    double bestScore = std::numeric_limits<double>::infinity();
+    BodyPose best = starts.front();
+    for (BodyPose pose : starts)
+    {
+      fitPose(frame, pose, nullptr, quick, 2.0 * options_.extremityGate);
+      const double s = twoSidedScore(frame, pose);
+      if (s < bestScore)
+      {
+        bestScore = s;
+        best = pose;
+      }
+    }
+    return best;
+  }
+
   /// A fit from one start, with its score.
   struct RankedFit
   {
@@ -538,25 +558,37 @@ public:
   void refitFromPoses(const FrameSurface& frame, const std::vector<BodyPose>& poses,
                       BodyFrameFit& fit)
   {
-    if (poses.empty()) return;
-    const std::vector<BodyFitStage> quick = quickStages();
-    double bestScore = std::numeric_limits<double>::infinity();
-    BodyPose best;
+    std::vector<BodyPose> starts;
     for (const BodyPose& seen : poses)
     {
       BodyPose pose = seen;
       const Points p = samples_.pose(pose);
       pose.translation +=
           frame.centroid - p.topRows(samples_.numSamples()).colwise().mean().transpose();
-      fitPose(frame, pose, nullptr, quick, 2.0 * options_.extremityGate);
-      const double s = twoSidedScore(frame, pose);
-      if (s < bestScore)
-      {
-        bestScore = s;
-        best = pose;
-      }
+      starts.push_back(pose);
     }
-    refitFrom(frame, best, fit);
+    if (!starts.empty()) refitFrom(frame, bestQuickFit(frame, starts), fit);
+  }
+
+  /// The fit started again from the joints of other fits (the poses the other frames of a
+  /// collection settled on), each under the fit's own root: its place and heading kept, every
+  /// other joint as the peer holds it. The limb restarts change one limb or pair at a time, and
+  /// the upper-body start takes every joint above the pelvis to rest; a torso twisted while an arm
+  /// is raised needs both changed at once, and a peer may hold them so (collection seed 13's
+  /// frame 9, BENCHMARKS.md). Each start briefly fitted, the best by twoSidedScore fitted fully
+  /// and kept if it explains the frame better (explainsBetter).
+  void refitFromPeerJoints(const FrameSurface& frame, const std::vector<BodyPose>& peers,
+                           BodyFrameFit& fit)
+  {
+    std::vector<BodyPose> starts;
+    for (const BodyPose& peer : peers)
+    {
+      BodyPose pose = peer;
+      pose.rotations.row(Pelvis) = fit.pose.rotations.row(Pelvis);
+      pose.translation = fit.pose.translation;
+      starts.push_back(pose);
+    }
+    if (!starts.empty()) refitFrom(frame, bestQuickFit(frame, starts), fit);
   }
 
   /// The body turned half round, fitted fully from two starts and its limbs started again
