@@ -142,6 +142,7 @@ vtkSmartPointer<vtkPolyData> fittedBodyPolyData(const clothtrack::BodyModel& mod
   clothtrack::addFieldValue(fd, "FrameDistance", f.frameDistance);
   clothtrack::addFieldValue(fd, "PreviousGap", f.previousGap);
   clothtrack::addFieldValue(fd, "ContinuesPrevious", static_cast<int>(f.continuesPrevious));
+  clothtrack::addFieldValue(fd, "RivalScoreRatio", f.rivalScoreRatio);
   return bodyData;
 }
 

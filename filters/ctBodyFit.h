@@ -18,8 +18,9 @@
  * rotations then the translation), RestPoseDistance (sum of the non-root joint angles in
  * radians, NaN unless the fit is ok), MedianDistance, InsideFraction, FrameDistance (mean
  * distance from the frame to the body, m), PreviousGap (mean surface distance to the frame
- * before, m) and ContinuesPrevious (0 when PreviousGap is above 6 cm and the frame was fitted as
- * an unrelated pose, else 1); the collection's field
+ * before, m), ContinuesPrevious (0 when PreviousGap is above 6 cm and the frame was fitted as
+ * an unrelated pose, else 1) and RivalScoreRatio (how nearly another pose explains the frame;
+ * infinity where not measured; ctTemplateFit doubts a frame below 1.2); the collection's field
  * data holds ShapeCoefficients (beta, the shape kept), MovedShape (1 when that is the one
  * estimated with the key frames' translations moving), OtherShapeCoefficients (the estimate
  * not kept; empty with TwoShapes off) and ShapeGap (the largest distance between the two

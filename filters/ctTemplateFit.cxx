@@ -109,9 +109,10 @@ clothtrack::PosedSkeleton skeletonOf(vtkPolyData* block, const std::string& name
   return out;
 }
 
-/// Frames nothing places (clothtrack::unplacedFrames), from each body's FitStatus and
-/// ContinuesPrevious field data; a body without the latter continues its predecessor.
-std::vector<bool> unplacedFrames(vtkMultiBlockDataSet* bodies)
+/// What the doubts need of each body (clothtrack::unplacedFrames, bodyRivalRatios), from its
+/// FitStatus, ContinuesPrevious and RivalScoreRatio field data; a body without the second
+/// continues its predecessor, one without the third has no rival measured.
+clothtrack::BodyFitResult bodyFitFlags(vtkMultiBlockDataSet* bodies)
 {
   using namespace clothtrack;
   BodyFitResult fits;
@@ -121,11 +122,13 @@ std::vector<bool> unplacedFrames(vtkMultiBlockDataSet* bodies)
     vtkFieldData* fd = block ? block->GetFieldData() : nullptr;
     vtkDataArray* status = fd ? fd->GetArray("FitStatus") : nullptr;
     vtkDataArray* continues = fd ? fd->GetArray("ContinuesPrevious") : nullptr;
+    vtkDataArray* rival = fd ? fd->GetArray("RivalScoreRatio") : nullptr;
     BodyFrameFit& f = fits.frames.emplace_back();
     if (status) f.status = static_cast<BodyFitStatus>(static_cast<int>(status->GetTuple1(0)));
     f.continuesPrevious = !continues || continues->GetTuple1(0) != 0;
+    if (rival) f.rivalScoreRatio = rival->GetTuple1(0);
   }
-  return clothtrack::unplacedFrames(fits);
+  return fits;
 }
 
 /// The template posed by each frame's fitted body (ctBodyFit output 0), nothing where the body
@@ -420,7 +423,12 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     for (const TriangleMesh& frame : frames) framePointers.push_back(&frame);
     SequenceQuality quality =
         fittedSequenceQuality(fits, templateMesh.F, framePointers, j, {}, posed);
-    if (bodies) doubtUnplacedFrames(quality, unplacedFrames(bodies));
+    if (bodies)
+    {
+      const clothtrack::BodyFitResult flags = bodyFitFlags(bodies);
+      doubtUnplacedFrames(quality, unplacedFrames(flags));
+      doubtAmbiguousBodies(quality, bodyRivalRatios(flags));
+    }
     for (int k : quality.doubtfulFrames)
       vtkWarningMacro(<< "template fit: " << frameName(sequence->GetBlock(k), k)
                       << " is doubtful: " << quality.confidence[k].doubt);

@@ -37,8 +37,9 @@
  * body), ExtentGap (lowest and highest points against that posed template's; NaN likewise),
  * Confidence. A frame whose body is not ok and does not continue its predecessor (ctBodyFit's
  * FitStatus and ContinuesPrevious) had nothing to place its start and is doubtful whatever it
- * measures (confidence 0.5; clothtrack/eval/SequenceQuality.h, doubtUnplacedFrames). A doubtful
- * frame is also a warning saying why.
+ * measures (confidence 0.5; clothtrack/eval/SequenceQuality.h, doubtUnplacedFrames), and so is a
+ * frame whose body another pose explains almost as well (RivalScoreRatio below 1.2; confidence
+ * 0.8; doubtAmbiguousBodies). A doubtful frame is also a warning saying why.
  *
  * A corrupt frame, a correspondence block that does not match the template or non-finite
  * input is an error naming the frame; a frame without correspondence is fitted from nearest

@@ -74,7 +74,9 @@ nlohmann::json bodyFrameJson(const std::string& file, const BodyFrameFit& fit)
       {"rest_pose_distance", std::isnan(fromRest) ? nlohmann::json() : nlohmann::json(fromRest)},
       {"frame_distance_m", fit.frameDistance},
       {"previous_gap_m", fit.previousGap},
-      {"continues_previous", fit.continuesPrevious}};
+      {"continues_previous", fit.continuesPrevious},
+      {"rival_score_ratio", std::isfinite(fit.rivalScoreRatio) ? nlohmann::json(fit.rivalScoreRatio)
+                                                               : nlohmann::json()}};
 }
 
 namespace
@@ -108,6 +110,8 @@ BodyFrameFit bodyFrameFit(const nlohmann::json& record)
   fit.frameDistance = record.value("frame_distance_m", 0.0);
   fit.previousGap = record.value("previous_gap_m", 0.0);
   fit.continuesPrevious = record.value("continues_previous", true);
+  const auto rival = record.find("rival_score_ratio");
+  if (rival != record.end() && rival->is_number()) fit.rivalScoreRatio = rival->get<double>();
   return fit;
 }
 

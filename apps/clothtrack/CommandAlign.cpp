@@ -708,9 +708,13 @@ SequenceQuality measureQuality(const Run& run, const AlignedOutput& output)
     if (!ranks::leader()) return SequenceQuality();
     quality = joinSequenceQuality(parts, n);
   }
-  // Frames whose start came from an unrelated frame's fit are doubtful whatever they measure.
+  // Frames whose start came from an unrelated frame's fit are doubtful whatever they measure,
+  // and so are those whose body another pose explains almost as well.
   if (static_cast<int>(run.body.body.frames.size()) == n && !quality.confidence.empty())
+  {
     doubtUnplacedFrames(quality, unplacedFrames(run.body.body));
+    doubtAmbiguousBodies(quality, bodyRivalRatios(run.body.body));
+  }
   return quality;
 }
 

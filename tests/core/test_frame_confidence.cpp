@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 
 using namespace clothtrack;
@@ -207,6 +209,27 @@ TEST(FrameConfidence, AFrameNothingPlacedIsDoubtfulWhateverItMeasures)
   EXPECT_NE(q.confidence[2].doubt.find(", no trusted body"), std::string::npos);
   EXPECT_EQ(q.confidence[3].confidence, 1.0);
   EXPECT_THROW(doubtUnplacedFrames(q, {true}), Error);
+}
+
+TEST(FrameConfidence, AmbiguousBodiesAreDoubtful)
+{
+  // Four accurate frames; the second's body has a rival pose just within the ratio, the third's
+  // just beyond it, the fourth's none measured.
+  SequenceQuality q;
+  q.confidence.resize(4);
+  const double inf = std::numeric_limits<double>::infinity();
+  doubtAmbiguousBodies(q, {0.9, 0.99 * kAmbiguousBodyRatio, 1.01 * kAmbiguousBodyRatio, inf});
+  EXPECT_EQ(q.doubtfulFrames, (std::vector<int>{0, 1}));
+  EXPECT_EQ(q.confidence[1].severity, kAmbiguousBodySeverity);
+  EXPECT_DOUBLE_EQ(q.confidence[1].confidence, 2.0 - kAmbiguousBodySeverity);
+  EXPECT_NE(q.confidence[1].doubt.find("another pose of the body"), std::string::npos);
+  EXPECT_EQ(q.confidence[2].confidence, 1.0);
+  EXPECT_TRUE(q.confidence[3].doubt.empty());
+  // An unplaced frame keeps its higher severity and says both.
+  doubtUnplacedFrames(q, {true, false, false, false});
+  EXPECT_EQ(q.confidence[0].severity, kUnplacedSeverity);
+  EXPECT_NE(q.confidence[0].doubt.find(", no trusted body"), std::string::npos);
+  EXPECT_THROW(doubtAmbiguousBodies(q, {1.0}), Error);
 }
 
 TEST(FrameConfidence, MismatchedVertexCountsAreAnError)

@@ -933,6 +933,7 @@ TEST(BodyFit, SharedFitsTravelAsBytes)
   fits[1].frameDistance = 0.031;
   fits[1].extremities = {Vec3(0, 1.7, 0), Vec3(0.5, 1, 0)};
   fits[1].continuesPrevious = false;
+  fits[1].rivalScoreRatio = 1.08;
   const std::string bytes = encodeFrameFits(fits, {1});
   std::vector<BodyFrameFit> read(3);
   decodeFrameFits(bytes, read);
@@ -943,6 +944,7 @@ TEST(BodyFit, SharedFitsTravelAsBytes)
   EXPECT_EQ(read[1].frameDistance, 0.031);
   EXPECT_EQ(read[1].extremities, fits[1].extremities);
   EXPECT_FALSE(read[1].continuesPrevious);
+  EXPECT_EQ(read[1].rivalScoreRatio, 1.08);
   EXPECT_TRUE(read[0].continuesPrevious); // frames not sent stay as they were
   EXPECT_THROW(decodeFrameFits(bytes.substr(0, bytes.size() - 1), read), Error);
   EXPECT_THROW(decodeFrameFits("not a fit", read), Error);

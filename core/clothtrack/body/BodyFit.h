@@ -47,6 +47,7 @@
 #include <Eigen/Geometry>
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -224,6 +225,11 @@ struct BodyFrameFit
   /// False when previousGap exceeds BodyFitOptions::neighbourGap: the frame was fitted as an
   /// unrelated pose, not from its predecessor alone.
   bool continuesPrevious = true;
+  /// The lowest two-sided score of another fit whose body lies more than 30 cm from this one's
+  /// somewhere (a limb elsewhere), relative to this fit's: near 1, two readings of the frame
+  /// explain it about as well. Measured on the unrelated frames of a collection, from the
+  /// other frames' joints (SequenceFitter::refitFromPeerJoints); infinity where not measured.
+  double rivalScoreRatio = std::numeric_limits<double>::infinity();
 };
 
 /// The median frameDistance of the ok fits; nullopt with fewer than `minimumFits` of them.

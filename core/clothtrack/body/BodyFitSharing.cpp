@@ -12,7 +12,7 @@ namespace clothtrack
 namespace
 {
 /// Bumped with any change of the layout below.
-constexpr std::uint32_t kLayout = 0x43544231; // "CTB1"
+constexpr std::uint32_t kLayout = 0x43544232; // "CTB2"
 
 void putFit(ByteWriter& w, const BodyFrameFit& f)
 {
@@ -21,7 +21,8 @@ void putFit(ByteWriter& w, const BodyFrameFit& f)
   for (int c = 0; c < 3; ++c) w.put(f.pose.translation[c]);
   w.put(static_cast<std::int32_t>(f.status));
   w.putText(f.message);
-  for (double v : {f.energy, f.medianDistance, f.insideFraction, f.frameDistance, f.previousGap})
+  for (double v : {f.energy, f.medianDistance, f.insideFraction, f.frameDistance, f.previousGap,
+                   f.rivalScoreRatio})
     w.put(v);
   w.put(static_cast<std::int32_t>(f.extremitiesDetected));
   w.put(static_cast<std::int32_t>(f.extremitiesMatched));
@@ -39,8 +40,8 @@ BodyFrameFit getFit(ByteReader& r)
   for (int c = 0; c < 3; ++c) f.pose.translation[c] = r.get<double>();
   f.status = static_cast<BodyFitStatus>(r.get<std::int32_t>());
   f.message = r.getText();
-  for (double* v :
-       {&f.energy, &f.medianDistance, &f.insideFraction, &f.frameDistance, &f.previousGap})
+  for (double* v : {&f.energy, &f.medianDistance, &f.insideFraction, &f.frameDistance,
+                    &f.previousGap, &f.rivalScoreRatio})
     *v = r.get<double>();
   f.extremitiesDetected = r.get<std::int32_t>();
   f.extremitiesMatched = r.get<std::int32_t>();

@@ -324,24 +324,58 @@ public:
     return {{1.0, 0.1, 0.0, 4, 0.4}, {0.3, 1.0, 1.0, 4, 0.15}};
   }
 
-  /// Of `starts` (not empty), the one that explains the frame best (twoSidedScore) once each is
-  /// briefly fitted (quickStages).
-  BodyPose bestQuickFit(const FrameSurface& frame, const std::vector<BodyPose>& starts)
+  /// A pose briefly fitted, with its two-sided score.
+  struct RankedPose
+  {
+    double score;
+    BodyPose pose;
+  };
+
+  /// `starts` each briefly fitted (quickStages), those that explain the frame best
+  /// (twoSidedScore) first.
+  std::vector<RankedPose> rankedQuickFits(const FrameSurface& frame,
+                                          const std::vector<BodyPose>& starts)
   {
     const std::vector<BodyFitStage> quick = quickStages();
-    double bestScore = std::numeric_limits<double>::infinity();
-    BodyPose best = starts.front();
+    std::vector<RankedPose> ranked;
     for (BodyPose pose : starts)
     {
       fitPose(frame, pose, nullptr, quick, 2.0 * options_.extremityGate);
-      const double s = twoSidedScore(frame, pose);
-      if (s < bestScore)
-      {
-        bestScore = s;
-        best = pose;
-      }
+      ranked.push_back({twoSidedScore(frame, pose), pose});
     }
-    return best;
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const RankedPose& a, const RankedPose& b) { return a.score < b.score; });
+    return ranked;
+  }
+
+  /// The largest distance between the same body sample in two poses (metres).
+  double bodyApart(const BodyPose& a, const BodyPose& b) const
+  {
+    const int n = samples_.numSamples();
+    return (samples_.pose(a).topRows(n) - samples_.pose(b).topRows(n)).rowwise().norm().maxCoeff();
+  }
+
+  /// Sets fit.rivalScoreRatio from `ranked` (rankedQuickFits): the first kRivalFits of them whose
+  /// body lies more than kRivalDistance from the fit's somewhere are fitted fully, and the lowest
+  /// score of those still that far from it, relative to the fit's, is the ratio. A rival is not
+  /// adopted: the fit already kept the best start by the same score.
+  void measureRivals(const FrameSurface& frame, const std::vector<RankedPose>& ranked,
+                     BodyFrameFit& fit)
+  {
+    const double current = twoSidedScore(frame, fit.pose);
+    double best = std::numeric_limits<double>::infinity();
+    int tried = 0;
+    for (const RankedPose& start : ranked)
+    {
+      if (tried == kRivalFits) break;
+      if (!(bodyApart(start.pose, fit.pose) > kRivalDistance)) continue;
+      ++tried;
+      BodyPose rival = start.pose;
+      fitPose(frame, rival, nullptr, options_.stages, options_.extremityGate);
+      if (bodyApart(rival, fit.pose) > kRivalDistance)
+        best = std::min(best, twoSidedScore(frame, rival));
+    }
+    if (current > 0) fit.rivalScoreRatio = std::min(fit.rivalScoreRatio, best / current);
   }
 
   /// A fit from one start, with its score.
@@ -567,7 +601,7 @@ public:
           frame.centroid - p.topRows(samples_.numSamples()).colwise().mean().transpose();
       starts.push_back(pose);
     }
-    if (!starts.empty()) refitFrom(frame, bestQuickFit(frame, starts), fit);
+    if (!starts.empty()) refitFrom(frame, rankedQuickFits(frame, starts).front().pose, fit);
   }
 
   /// The fit started again from the joints of other fits (the poses the other frames of a
@@ -588,7 +622,10 @@ public:
       pose.translation = fit.pose.translation;
       starts.push_back(pose);
     }
-    if (!starts.empty()) refitFrom(frame, bestQuickFit(frame, starts), fit);
+    if (starts.empty()) return;
+    const std::vector<RankedPose> ranked = rankedQuickFits(frame, starts);
+    refitFrom(frame, ranked.front().pose, fit);
+    measureRivals(frame, ranked, fit);
   }
 
   /// The body turned half round, fitted fully from two starts and its limbs started again
@@ -998,6 +1035,10 @@ private:
   static constexpr double kArmsThroughChest = 0.3;
   static constexpr double kArmsOutShare = 0.2;
   static constexpr double kArmsOutScoreRatio = 1.25;
+  /// measureRivals: how far apart (metres, the farthest body sample) two fits must lie to be
+  /// two readings of the frame, and how many rival starts are fitted fully.
+  static constexpr double kRivalDistance = 0.3;
+  static constexpr int kRivalFits = 2;
   /// Hip extension (radians, a positive rotation about X) beyond which a leg is not aimed.
   static constexpr double kLargestHipExtension = 0.6;
   /// The same when both legs are aimed across the frame's feet, each at its own: the leg

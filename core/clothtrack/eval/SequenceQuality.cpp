@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -137,6 +138,27 @@ void doubtUnplacedFrames(SequenceQuality& q, const std::vector<bool>& unplaced)
     c.confidence = std::clamp(2.0 - c.severity, 0.0, 1.0);
     c.doubt += (c.doubt.empty() ? "" : ", ") +
                std::string("no trusted body, and unlike the frame before it");
+  }
+  summarise(q);
+}
+
+void doubtAmbiguousBodies(SequenceQuality& q, const std::vector<double>& rivalRatios)
+{
+  if (rivalRatios.size() != q.confidence.size())
+    throw Error("Sequence quality: " + std::to_string(rivalRatios.size()) +
+                " body rival ratios for " + std::to_string(q.confidence.size()) + " frames.");
+  for (size_t k = 0; k < rivalRatios.size(); ++k)
+  {
+    if (!(rivalRatios[k] < kAmbiguousBodyRatio)) continue;
+    FrameConfidence& c = q.confidence[k];
+    c.severity = std::max(c.severity, kAmbiguousBodySeverity);
+    c.confidence = std::clamp(2.0 - c.severity, 0.0, 1.0);
+    char doubt[160];
+    std::snprintf(doubt, sizeof doubt,
+                  "another pose of the body, a limb elsewhere, explains it almost as well "
+                  "(score ratio %.3f < %.2f)",
+                  rivalRatios[k], kAmbiguousBodyRatio);
+    c.doubt += (c.doubt.empty() ? "" : ", ") + std::string(doubt);
   }
   summarise(q);
 }

@@ -63,6 +63,22 @@ inline constexpr double kUnplacedSeverity = 1.5;
 /// per frame.
 void doubtUnplacedFrames(SequenceQuality& quality, const std::vector<bool>& unplaced);
 
+/// A body fit whose rival (BodyFrameFit::rivalScoreRatio: another pose, a limb elsewhere, that
+/// explains the frame) scores below this multiple of the fit's is ambiguous. Set on the
+/// development collections of unclothed poses: below 1.2 lay the 4 of their 80 frames aligned
+/// more than 10 cm off, and one aligned within it (docs/confidence.md).
+inline constexpr double kAmbiguousBodyRatio = 1.2;
+
+/// The severity doubtAmbiguousBodies gives: past every limit's 1, so the frame is doubtful
+/// (confidence 0.8), but short of the 1.5 from which the template fit retries a frame: a start
+/// from a neighbour's fit would not tell the two poses apart either.
+inline constexpr double kAmbiguousBodySeverity = 1.2;
+
+/// Marks each frame k whose body fit has a rival within kAmbiguousBodyRatio (`rivalRatios[k]`,
+/// infinity where none was measured) doubtful, and lists the doubtful frames again. Throws Error
+/// when the list does not have one entry per frame.
+void doubtAmbiguousBodies(SequenceQuality& quality, const std::vector<double>& rivalRatios);
+
 // Processes sharing a run each measure their part of the sequence (rangePart), send it as
 // bytes (encodeSequenceQuality), and one joins the parts (joinSequenceQuality): the result is
 // sequenceQuality's, bit for bit.

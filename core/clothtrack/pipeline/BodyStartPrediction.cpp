@@ -64,6 +64,13 @@ std::vector<bool> unplacedFrames(const BodyFitResult& body)
   return unplaced;
 }
 
+std::vector<double> bodyRivalRatios(const BodyFitResult& body)
+{
+  std::vector<double> ratios;
+  for (const BodyFrameFit& f : body.frames) ratios.push_back(f.rivalScoreRatio);
+  return ratios;
+}
+
 std::optional<Points> bodyPosedStart(const TemplatePosedByBody& posed,
                                      const std::function<FramePtr(int)>& frames, int k)
 {

@@ -40,6 +40,9 @@ TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResul
 /// (BodyFrameFit::continuesPrevious), so the fallback carries an unrelated frame's fit to them.
 std::vector<bool> unplacedFrames(const BodyFitResult& body);
 
+/// Each frame's BodyFrameFit::rivalScoreRatio (eval/SequenceQuality.h, doubtAmbiguousBodies).
+std::vector<double> bodyRivalRatios(const BodyFitResult& body);
+
 /// The start of frame k: the template posed by frame k's body. Frames without one start from
 /// `fallback` (which may be empty: the neighbour's fit as it is). With `frames`, each posed
 /// template is first stretched to its frame's extent (stretchToFrameExtent).
