@@ -109,7 +109,7 @@ clothtrack::PosedSkeleton skeletonOf(vtkPolyData* block, const std::string& name
   return out;
 }
 
-/// What the doubts need of each body (clothtrack::unplacedFrames, bodyRivalRatios), from its
+/// What the doubts need of each body (clothtrack::doubtFromBodies), from its
 /// FitStatus, ContinuesPrevious and RivalScoreRatio field data; a body without the second
 /// continues its predecessor, one without the third has no rival measured.
 clothtrack::BodyFitResult bodyFitFlags(vtkMultiBlockDataSet* bodies)
@@ -423,12 +423,7 @@ int ctTemplateFit::RequestData(vtkInformation*, vtkInformationVector** inputVect
     for (const TriangleMesh& frame : frames) framePointers.push_back(&frame);
     SequenceQuality quality =
         fittedSequenceQuality(fits, templateMesh.F, framePointers, j, {}, posed);
-    if (bodies)
-    {
-      const clothtrack::BodyFitResult flags = bodyFitFlags(bodies);
-      doubtUnplacedFrames(quality, unplacedFrames(flags));
-      doubtAmbiguousBodies(quality, bodyRivalRatios(flags));
-    }
+    if (bodies) doubtFromBodies(quality, bodyFitFlags(bodies));
     for (int k : quality.doubtfulFrames)
       vtkWarningMacro(<< "template fit: " << frameName(sequence->GetBlock(k), k)
                       << " is doubtful: " << quality.confidence[k].doubt);

@@ -710,11 +710,7 @@ SequenceQuality measureQuality(const Run& run, const AlignedOutput& output)
   }
   // Frames whose start came from an unrelated frame's fit are doubtful whatever they measure,
   // and so are those whose body another pose explains almost as well.
-  if (static_cast<int>(run.body.body.frames.size()) == n && !quality.confidence.empty())
-  {
-    doubtUnplacedFrames(quality, unplacedFrames(run.body.body));
-    doubtAmbiguousBodies(quality, bodyRivalRatios(run.body.body));
-  }
+  doubtFromBodies(quality, run.body.body);
   return quality;
 }
 

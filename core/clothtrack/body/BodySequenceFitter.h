@@ -610,7 +610,8 @@ public:
   /// the upper-body start takes every joint above the pelvis to rest; a torso twisted while an arm
   /// is raised needs both changed at once, and a peer may hold them so (collection seed 13's
   /// frame 9, BENCHMARKS.md). Each start briefly fitted, the best by twoSidedScore fitted fully
-  /// and kept if it explains the frame better (explainsBetter).
+  /// and kept if it explains the frame better (explainsBetter); the starts that settled elsewhere
+  /// then measure how ambiguous the frame is (measureRivals).
   void refitFromPeerJoints(const FrameSurface& frame, const std::vector<BodyPose>& peers,
                            BodyFrameFit& fit)
   {

@@ -115,6 +115,17 @@ SequenceQuality sequenceQualityOfFrames(const AlignedAccess& aligned,
   return q;
 }
 
+namespace
+{
+/// Raises a frame's severity to at least `severity` and adds `why` to its doubts.
+void raiseDoubt(FrameConfidence& c, double severity, const std::string& why)
+{
+  c.severity = std::max(c.severity, severity);
+  c.confidence = std::clamp(2.0 - c.severity, 0.0, 1.0);
+  c.doubt += (c.doubt.empty() ? "" : ", ") + why;
+}
+} // namespace
+
 void summarise(SequenceQuality& q)
 {
   q.doubtfulFrames.clear();
@@ -131,14 +142,9 @@ void doubtUnplacedFrames(SequenceQuality& q, const std::vector<bool>& unplaced)
     throw Error("Sequence quality: " + std::to_string(unplaced.size()) + " placement flags for " +
                 std::to_string(q.confidence.size()) + " frames.");
   for (size_t k = 0; k < unplaced.size(); ++k)
-  {
-    if (!unplaced[k]) continue;
-    FrameConfidence& c = q.confidence[k];
-    c.severity = std::max(c.severity, kUnplacedSeverity);
-    c.confidence = std::clamp(2.0 - c.severity, 0.0, 1.0);
-    c.doubt += (c.doubt.empty() ? "" : ", ") +
-               std::string("no trusted body, and unlike the frame before it");
-  }
+    if (unplaced[k])
+      raiseDoubt(q.confidence[k], kUnplacedSeverity,
+                 "no trusted body, and unlike the frame before it");
   summarise(q);
 }
 
@@ -150,15 +156,12 @@ void doubtAmbiguousBodies(SequenceQuality& q, const std::vector<double>& rivalRa
   for (size_t k = 0; k < rivalRatios.size(); ++k)
   {
     if (!(rivalRatios[k] < kAmbiguousBodyRatio)) continue;
-    FrameConfidence& c = q.confidence[k];
-    c.severity = std::max(c.severity, kAmbiguousBodySeverity);
-    c.confidence = std::clamp(2.0 - c.severity, 0.0, 1.0);
     char doubt[160];
     std::snprintf(doubt, sizeof doubt,
                   "another pose of the body, a limb elsewhere, explains it almost as well "
                   "(score ratio %.3f < %.2f)",
                   rivalRatios[k], kAmbiguousBodyRatio);
-    c.doubt += (c.doubt.empty() ? "" : ", ") + std::string(doubt);
+    raiseDoubt(q.confidence[k], kAmbiguousBodySeverity, doubt);
   }
   summarise(q);
 }

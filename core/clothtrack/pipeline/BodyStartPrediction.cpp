@@ -64,11 +64,13 @@ std::vector<bool> unplacedFrames(const BodyFitResult& body)
   return unplaced;
 }
 
-std::vector<double> bodyRivalRatios(const BodyFitResult& body)
+void doubtFromBodies(SequenceQuality& quality, const BodyFitResult& body)
 {
-  std::vector<double> ratios;
-  for (const BodyFrameFit& f : body.frames) ratios.push_back(f.rivalScoreRatio);
-  return ratios;
+  if (body.frames.size() != quality.confidence.size() || quality.confidence.empty()) return;
+  doubtUnplacedFrames(quality, unplacedFrames(body));
+  std::vector<double> rivalRatios;
+  for (const BodyFrameFit& f : body.frames) rivalRatios.push_back(f.rivalScoreRatio);
+  doubtAmbiguousBodies(quality, rivalRatios);
 }
 
 std::optional<Points> bodyPosedStart(const TemplatePosedByBody& posed,

@@ -5,6 +5,7 @@
 #include <clothtrack/body/BodyFit.h>
 #include <clothtrack/body/SkinnedTemplate.h>
 #include <clothtrack/eval/FrameConfidence.h>
+#include <clothtrack/eval/SequenceQuality.h>
 #include <clothtrack/fit/SequenceFit.h>
 
 #include <functional>
@@ -40,8 +41,11 @@ TemplatePosedByBody bodyPosedTemplate(const BodyModel& model, const BodyFitResul
 /// (BodyFrameFit::continuesPrevious), so the fallback carries an unrelated frame's fit to them.
 std::vector<bool> unplacedFrames(const BodyFitResult& body);
 
-/// Each frame's BodyFrameFit::rivalScoreRatio (eval/SequenceQuality.h, doubtAmbiguousBodies).
-std::vector<double> bodyRivalRatios(const BodyFitResult& body);
+/// The doubts a frame's body fit raises whatever the frame measures (eval/SequenceQuality.h):
+/// unplacedFrames (doubtUnplacedFrames), and a body that another pose explains almost as well
+/// (BodyFrameFit::rivalScoreRatio, doubtAmbiguousBodies). Does nothing unless `body` has one fit
+/// per measured frame (a run without a body fit has none).
+void doubtFromBodies(SequenceQuality& quality, const BodyFitResult& body);
 
 /// The start of frame k: the template posed by frame k's body. Frames without one start from
 /// `fallback` (which may be empty: the neighbour's fit as it is). With `frames`, each posed
